@@ -26,4 +26,10 @@ void basis_functions(const std::vector<double>& U, int p, int span, double u, do
 std::vector<std::vector<double>> basis_function_derivatives(
     const std::vector<double>& U, int p, int span, double u, int n);
 
+// The same without allocation, for evaluation loops: ders must have room for
+// (n+1) * (p+1) values, row-major (ders[k * (p+1) + j] = k-th derivative of
+// N_{span-p+j,p}).
+void basis_function_derivatives(const std::vector<double>& U, int p, int span, double u,
+                                int n, double* ders);
+
 }  // namespace trimkit::geom

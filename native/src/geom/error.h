@@ -3,6 +3,8 @@
 // Python sees InvalidInput as ValueError and the others as RuntimeError.
 #pragma once
 
+#include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -22,12 +24,13 @@ public:
     explicit NumericalFailure(const std::string& what) : std::runtime_error(what) {}
 };
 
-// A file could not be read. `file` and `line` locate the problem (line 0: none);
-// what() is already formatted as "FILE:LINE: reason".
+// A file could not be read. `file` and `line` locate the problem; what() is
+// formatted as "FILE:LINE: reason", or "FILE: reason" when line is 0 (no line).
 class ReadError : public std::runtime_error {
 public:
     ReadError(const std::string& file, int line, const std::string& reason)
-        : std::runtime_error(file + ":" + std::to_string(line) + ": " + reason),
+        : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+                             ": " + reason),
           file_(file), line_(line), reason_(reason) {}
     const std::string& file() const { return file_; }
     int line() const { return line_; }
@@ -38,5 +41,19 @@ private:
     int line_;
     std::string reason_;
 };
+
+// Shortest decimal text (6 to 17 significant digits) that reads back as x, for
+// error messages: 0.2 prints as "0.2", knots 1e-12 apart still print apart.
+inline std::string format_value(double x) {
+    std::string text;
+    for (int digits = 6; digits <= 17; ++digits) {
+        std::ostringstream out;
+        out.precision(digits);
+        out << x;
+        text = out.str();
+        if (std::strtod(text.c_str(), nullptr) == x) break;
+    }
+    return text;
+}
 
 }  // namespace trimkit::geom

@@ -37,6 +37,10 @@ struct Face {
     NurbsSurface surface;
     std::vector<Loop> loops;    // never empty: untrimmed faces get their natural boundary
     bool reversed = false;
+    // What the file called the surface before conversion to NURBS: "bspline",
+    // "plane", "cylinder", "cone", "sphere", "torus", "revolution",
+    // "tabulated_cylinder", "ruled", ... (reported by `trimkit info`).
+    std::string surface_kind = "bspline";
     std::string name;
     int color = -1;             // index into Model::colors, -1 for none
     int source_entity = 0;      // IGES directory sequence number (or 0)

@@ -1,0 +1,14 @@
+// The `trimkit` subcommands. Each takes the arguments after its name, prints
+// its result to stdout and returns the exit status; errors are thrown
+// (UsageError, geom::ReadError, geom::InvalidInput -> 2; others -> 1).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace trimkit::cli {
+
+// trimkit info MODEL [--json]
+int run_info(const std::vector<std::string>& args);
+
+}  // namespace trimkit::cli

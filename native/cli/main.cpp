@@ -1,0 +1,56 @@
+// `trimkit`: the command-line program. Dispatches to one subcommand and turns
+// exceptions into one stderr line "trimkit: FILE:LINE: what is wrong" with exit
+// status 2 for bad input or usage and 1 for internal failures.
+#include <exception>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "arguments.h"
+#include "commands.h"
+#include "geom/error.h"
+
+namespace {
+
+const char* const kUsage =
+    "usage: trimkit COMMAND [ARGS]\n"
+    "commands:\n"
+    "  info MODEL [--json]    summary of an IGES model: units, faces, surfaces, loops, edges\n";
+
+int fail(int status, const std::string& message) {
+    std::cerr << "trimkit: " << message << "\n";
+    return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using Command = std::function<int(const std::vector<std::string>&)>;
+    const std::map<std::string, Command> commands = {
+        {"info", trimkit::cli::run_info},
+    };
+    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+        std::cout << kUsage;
+        return argc < 2 ? 2 : 0;
+    }
+    const auto command = commands.find(argv[1]);
+    if (command == commands.end()) {
+        std::cerr << kUsage;
+        return fail(2, std::string("unknown command '") + argv[1] + "'");
+    }
+    try {
+        return command->second(std::vector<std::string>(argv + 2, argv + argc));
+    } catch (const trimkit::cli::UsageError& e) {
+        return fail(2, e.what());
+    } catch (const trimkit::geom::ReadError& e) {
+        return fail(2, e.what());
+    } catch (const trimkit::geom::InvalidInput& e) {
+        return fail(2, e.what());
+    } catch (const std::bad_alloc&) {
+        return fail(1, "out of memory");
+    } catch (const std::exception& e) {
+        return fail(1, std::string("internal error: ") + e.what());
+    }
+}

@@ -1,0 +1,78 @@
+#include "io/model_summary.h"
+
+#include <set>
+#include <sstream>
+
+#include "io/json_writer.h"
+
+namespace trimkit::io {
+
+ModelSummary summarize(const geom::Model& model, const std::string& file) {
+    ModelSummary s;
+    s.file = file;
+    s.units = model.units;
+    s.scale_to_metres = model.scale_to_metres;
+    s.faces = static_cast<int>(model.faces.size());
+    std::set<int> used_edges;
+    for (const geom::Face& face : model.faces) {
+        ++s.surfaces[face.surface_kind];
+        s.loops += static_cast<int>(face.loops.size());
+        for (const geom::Loop& loop : face.loops) {
+            s.coedges += static_cast<int>(loop.coedges.size());
+            for (const geom::Coedge& coedge : loop.coedges)
+                if (coedge.edge >= 0) used_edges.insert(coedge.edge);
+        }
+    }
+    s.shared_edges = static_cast<int>(used_edges.size());
+    s.bodies = static_cast<int>(model.bodies.size());
+    for (const geom::Body& body : model.bodies) s.closed_bodies += body.closed ? 1 : 0;
+    s.colors = static_cast<int>(model.colors.size());
+    s.warnings = model.warnings;
+    for (size_t i = 0; i < model.faces.size(); ++i)
+        for (const std::string& w : model.faces[i].warnings)
+            s.warnings.push_back("face " + std::to_string(i) + ": " + w);
+    return s;
+}
+
+std::string to_json(const ModelSummary& s) {
+    std::ostringstream out;
+    out << "{\"file\": " << json_string(s.file) << ", \"units\": " << json_string(s.units)
+        << ", \"scale_to_metres\": " << json_number(s.scale_to_metres)
+        << ", \"faces\": " << s.faces << ", \"surfaces\": {";
+    const char* sep = "";
+    for (const auto& [kind, count] : s.surfaces) {
+        out << sep << json_string(kind) << ": " << count;
+        sep = ", ";
+    }
+    out << "}, \"loops\": " << s.loops << ", \"coedges\": " << s.coedges
+        << ", \"shared_edges\": " << s.shared_edges << ", \"bodies\": " << s.bodies
+        << ", \"closed_bodies\": " << s.closed_bodies << ", \"colors\": " << s.colors
+        << ", \"warnings\": [";
+    sep = "";
+    for (const std::string& w : s.warnings) {
+        out << sep << json_string(w);
+        sep = ", ";
+    }
+    out << "]}";
+    return out.str();
+}
+
+std::string to_text(const ModelSummary& s) {
+    std::ostringstream out;
+    out << "file:            " << s.file << "\n"
+        << "units:           " << s.units << " (1 unit = " << s.scale_to_metres << " m)\n"
+        << "faces:           " << s.faces << "\n"
+        << "surfaces:       ";
+    for (const auto& [kind, count] : s.surfaces) out << " " << kind << " " << count;
+    out << "\n"
+        << "loops:           " << s.loops << "\n"
+        << "coedges:         " << s.coedges << "\n"
+        << "shared edges:    " << s.shared_edges << "\n"
+        << "bodies:          " << s.bodies << " (" << s.closed_bodies << " closed)\n"
+        << "colours:         " << s.colors << "\n"
+        << "warnings:        " << s.warnings.size() << "\n";
+    for (const std::string& w : s.warnings) out << "  " << w << "\n";
+    return out.str();
+}
+
+}  // namespace trimkit::io

@@ -1,0 +1,21 @@
+#include "io/read_model.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "geom/error.h"
+#include "io/read_iges.h"
+
+namespace trimkit::io {
+
+geom::Model read_model(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".igs" || ext == ".iges") return read_iges(path);
+    throw geom::ReadError(path, 0,
+                          "unsupported file type '" + ext + "'; expected .igs or .iges");
+}
+
+}  // namespace trimkit::io

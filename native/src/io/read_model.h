@@ -1,0 +1,13 @@
+// Reads any model file trimkit knows, choosing the reader by extension:
+// .igs/.iges (read_iges); others throw ReadError naming the file.
+#pragma once
+
+#include <string>
+
+#include "geom/model.h"
+
+namespace trimkit::io {
+
+geom::Model read_model(const std::string& path);
+
+}  // namespace trimkit::io
