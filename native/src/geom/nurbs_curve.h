@@ -31,6 +31,7 @@ public:
     bool is_rational() const { return rational_; }
     std::pair<double, double> domain() const;
 
+    // t outside the domain is clamped to it (no extrapolation).
     Point evaluate(double t) const;
     // C(t) and its derivatives up to `order` (<= 2 guaranteed, higher allowed);
     // result[k] is the k-th derivative. Rational: [PT] Algorithm A4.2.
@@ -51,7 +52,7 @@ public:
     // Box of the control points (contains the curve by the convex hull property).
     Box control_box() const;
 
-    // Only for Dim == 3: the curve under an affine transform (exact for NURBS).
+    // The curve under an affine transform (exact for NURBS); Dim 2 or 3.
     NurbsCurve transformed(const Eigen::Transform<double, Dim, Eigen::Affine>& T) const;
 
 private:

@@ -38,6 +38,7 @@ public:
     std::pair<double, double> domain_u() const;
     std::pair<double, double> domain_v() const;
 
+    // (u, v) outside the domain is clamped to it (no extrapolation).
     Eigen::Vector3d evaluate(double u, double v) const;
     // S, Su, Sv, Suu, Suv, Svv. Rational: [PT] Algorithm A4.4.
     // Throws NumericalFailure if the rational denominator vanishes.

@@ -1,0 +1,311 @@
+// NurbsCurve<Dim>: validation, evaluation ([PT] Ch. 3-4) and knot insertion
+// based operations ([PT] Ch. 5). Rational operations work on homogeneous points
+// Pw = (w P, w), the [PT] convention.
+#include "geom/nurbs_curve.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "geom/bspline_basis.h"
+#include "geom/error.h"
+#include "geom/knot_vector.h"
+
+namespace trimkit::geom {
+
+namespace {
+
+template <int Dim>
+std::string point_text(const Eigen::Matrix<double, Dim, 1>& P) {
+    std::string text = "(";
+    for (int d = 0; d < Dim; ++d) text += (d ? ", " : "") + format_value(P[d]);
+    return text + ")";
+}
+
+// t moved onto the nearest knot when closer than kKnotTolerance * domain length,
+// so near-duplicate knots are never created.
+double snap_to_knot(const std::vector<double>& U, double t, double tol) {
+    auto it = std::lower_bound(U.begin(), U.end(), t);
+    double best = t, dist = tol;
+    if (it != U.end() && std::abs(*it - t) <= dist) { best = *it; dist = std::abs(*it - t); }
+    if (it != U.begin() && std::abs(*(it - 1) - t) <= dist) best = *(it - 1);
+    return best;
+}
+
+}  // namespace
+
+template <int Dim>
+NurbsCurve<Dim>::NurbsCurve(int degree, std::vector<double> knots, std::vector<Point> points,
+                            std::vector<double> weights) {
+    const std::string owner = "NurbsCurve";
+    // Degree first: nothing below allocates in proportion to it.
+    if (degree < 1 || degree > kMaxDegree)
+        throw InvalidInput(owner + ": degree " + std::to_string(degree) + "; expected 1.." +
+                           std::to_string(kMaxDegree) + " (kMaxDegree)");
+    if (!weights.empty() && weights.size() != points.size())
+        throw InvalidInput(owner + ": " + std::to_string(weights.size()) + " weights for " +
+                           std::to_string(points.size()) +
+                           " control points; expected one weight per point, or none");
+    validate_knot_vector(knots, degree, static_cast<int>(points.size()), owner);
+    for (size_t i = 0; i < points.size(); ++i)
+        if (!points[i].allFinite())
+            throw InvalidInput(owner + ": point[" + std::to_string(i) + "] = " +
+                               point_text<Dim>(points[i]) + "; control points must be finite");
+    bool rational = false;
+    for (size_t i = 0; i < weights.size(); ++i) {
+        if (!(weights[i] > 0.0) || !std::isfinite(weights[i]))
+            throw InvalidInput(owner + ": weight[" + std::to_string(i) + "] = " +
+                               format_value(weights[i]) +
+                               "; rational weights must be finite and > 0");
+        if (weights[i] != 1.0) rational = true;
+    }
+    if (weights.empty()) weights.assign(points.size(), 1.0);
+    p_ = degree;
+    U_ = std::move(knots);
+    P_ = std::move(points);
+    w_ = std::move(weights);
+    rational_ = rational;
+}
+
+template <int Dim>
+std::pair<double, double> NurbsCurve<Dim>::domain() const {
+    return {U_[p_], U_[U_.size() - p_ - 1]};
+}
+
+// [PT] Algorithm A4.1 (A3.1 when not rational). t is clamped to the domain.
+template <int Dim>
+typename NurbsCurve<Dim>::Point NurbsCurve<Dim>::evaluate(double t) const {
+    const auto [a, b] = domain();
+    t = std::min(std::max(t, a), b);
+    const int span = knot_span(U_, p_, t);
+    double N[kMaxDegree + 1];
+    basis_functions(U_, p_, span, t, N);
+    const int first = span - p_;
+    Point C = Point::Zero();
+    if (!rational_) {
+        for (int j = 0; j <= p_; ++j) C += N[j] * P_[first + j];
+        return C;
+    }
+    double W = 0.0;
+    for (int j = 0; j <= p_; ++j) {
+        const double c = N[j] * w_[first + j];
+        C += c * P_[first + j];
+        W += c;
+    }
+    return C / W;  // W >= min weight > 0: basis functions are a partition of unity
+}
+
+// [PT] Algorithm A3.2 on the homogeneous points, then A4.2 for the rational case:
+// C^(k) = (A^(k) - sum_{i=1..k} binom(k,i) w^(i) C^(k-i)) / w.
+template <int Dim>
+std::vector<typename NurbsCurve<Dim>::Point> NurbsCurve<Dim>::derivatives(double t,
+                                                                          int order) const {
+    if (order < 0)
+        throw InvalidInput("NurbsCurve::derivatives: order " + std::to_string(order) +
+                           "; expected >= 0");
+    const auto [a, b] = domain();
+    t = std::min(std::max(t, a), b);
+    const int span = knot_span(U_, p_, t);
+    const int du = std::min(order, p_);
+    double ders[(kMaxDegree + 1) * (kMaxDegree + 1)];
+    basis_function_derivatives(U_, p_, span, t, du, ders);
+    const int first = span - p_, stride = p_ + 1;
+
+    std::vector<Point> CK(order + 1, Point::Zero());
+    if (!rational_) {
+        for (int k = 0; k <= du; ++k)
+            for (int j = 0; j <= p_; ++j) CK[k] += ders[k * stride + j] * P_[first + j];
+        return CK;
+    }
+    // A^(k) is accumulated into CK[k] and replaced by C^(k) in order of k.
+    std::vector<double> W(order + 1, 0.0);
+    for (int k = 0; k <= du; ++k)
+        for (int j = 0; j <= p_; ++j) {
+            const double c = ders[k * stride + j] * w_[first + j];
+            CK[k] += c * P_[first + j];
+            W[k] += c;
+        }
+    if (!(W[0] > 0.0))
+        throw NumericalFailure("NurbsCurve: rational denominator " + format_value(W[0]) +
+                               " at t = " + format_value(t));
+    std::vector<double> binom(order + 1, 0.0);  // row k of Pascal's triangle
+    for (int k = 0; k <= order; ++k) {
+        binom[k] = 1.0;
+        for (int i = k - 1; i >= 1; --i) binom[i] += binom[i - 1];
+        Point v = CK[k];
+        for (int i = 1; i <= std::min(k, du); ++i) v -= binom[i] * W[i] * CK[k - i];
+        CK[k] = v / W[0];
+    }
+    return CK;
+}
+
+// [PT] Algorithm A5.1 on homogeneous points Pw = (w P, w).
+template <int Dim>
+NurbsCurve<Dim> NurbsCurve<Dim>::insert_knot(double t, int times) const {
+    if (times < 0)
+        throw InvalidInput("NurbsCurve::insert_knot: times = " + std::to_string(times) +
+                           "; expected >= 0");
+    const auto [a, b] = domain();
+    if (!(t >= a && t <= b))
+        throw InvalidInput("NurbsCurve::insert_knot: t = " + format_value(t) +
+                           " outside the domain [" + format_value(a) + ", " +
+                           format_value(b) + "]");
+    t = snap_to_knot(U_, t, kKnotTolerance * (b - a));
+    const int s = static_cast<int>(std::count(U_.begin(), U_.end(), t));
+    const int r = std::min(times, p_ - s);
+    if (r <= 0) return *this;
+    // U[k] <= t < U[k+1]; t < U[m] here, since t == U[m] would mean s >= p + 1.
+    const int k = static_cast<int>(std::upper_bound(U_.begin(), U_.end(), t) - U_.begin()) - 1;
+    const int p = p_, np = static_cast<int>(P_.size()) - 1;
+
+    using HPoint = Eigen::Matrix<double, Dim + 1, 1>;
+    auto Pw = [&](int i) {
+        HPoint h;
+        h << w_[i] * P_[i], w_[i];
+        return h;
+    };
+    std::vector<HPoint> Qw(np + 1 + r);
+    for (int i = 0; i <= k - p; ++i) Qw[i] = Pw(i);
+    for (int i = k - s; i <= np; ++i) Qw[i + r] = Pw(i);
+    HPoint Rw[kMaxDegree + 1];
+    for (int i = 0; i <= p - s; ++i) Rw[i] = Pw(k - p + i);
+    int L = k - p;
+    for (int j = 1; j <= r; ++j) {
+        L = k - p + j;
+        for (int i = 0; i <= p - j - s; ++i) {
+            const double alpha = (t - U_[L + i]) / (U_[i + k + 1] - U_[L + i]);
+            Rw[i] = alpha * Rw[i + 1] + (1.0 - alpha) * Rw[i];
+        }
+        Qw[L] = Rw[0];
+        Qw[k + r - j - s] = Rw[p - j - s];
+    }
+    for (int i = L + 1; i < k - s; ++i) Qw[i] = Rw[i - L];
+
+    NurbsCurve result;
+    result.p_ = p_;
+    result.rational_ = rational_;
+    result.U_.reserve(U_.size() + r);
+    result.U_.insert(result.U_.end(), U_.begin(), U_.begin() + k + 1);
+    result.U_.insert(result.U_.end(), r, t);
+    result.U_.insert(result.U_.end(), U_.begin() + k + 1, U_.end());
+    result.P_.resize(Qw.size());
+    result.w_.resize(Qw.size());
+    for (size_t i = 0; i < Qw.size(); ++i) {
+        // Not rational: w stays exactly 1, so P is read off without a division.
+        result.w_[i] = rational_ ? Qw[i][Dim] : 1.0;
+        result.P_[i] = rational_ ? Point(Qw[i].template head<Dim>() / Qw[i][Dim])
+                                 : Point(Qw[i].template head<Dim>());
+    }
+    return result;
+}
+
+namespace {
+
+// The part of `c` over [a, b], where a and b are knots of multiplicity >= p
+// (so the part is clamped at both ends): points P[la-p .. fb-1] with la the last
+// knot index at a and fb the first at b.
+template <int Dim>
+NurbsCurve<Dim> extract(const NurbsCurve<Dim>& c, double a, double b) {
+    const auto& U = c.knots();
+    const int p = c.degree();
+    const int la = static_cast<int>(std::upper_bound(U.begin(), U.end(), a) - U.begin()) - 1;
+    const int fb = static_cast<int>(std::lower_bound(U.begin(), U.end(), b) - U.begin());
+    std::vector<double> knots(p + 1, a);
+    knots.insert(knots.end(), U.begin() + la + 1, U.begin() + fb);
+    knots.insert(knots.end(), p + 1, b);
+    std::vector<typename NurbsCurve<Dim>::Point> points(c.points().begin() + (la - p),
+                                                        c.points().begin() + fb);
+    std::vector<double> weights;
+    if (c.is_rational())
+        weights.assign(c.weights().begin() + (la - p), c.weights().begin() + fb);
+    return NurbsCurve<Dim>(p, std::move(knots), std::move(points), std::move(weights));
+}
+
+}  // namespace
+
+template <int Dim>
+NurbsCurve<Dim> NurbsCurve<Dim>::sub_curve(double a, double b) const {
+    const auto [lo, hi] = domain();
+    const double tol = kKnotTolerance * (hi - lo);
+    if (!(a < b) || a < lo - tol || b > hi + tol)
+        throw InvalidInput("NurbsCurve::sub_curve: [" + format_value(a) + ", " +
+                           format_value(b) + "]; expected a < b inside the domain [" +
+                           format_value(lo) + ", " + format_value(hi) + "]");
+    a = snap_to_knot(U_, std::max(a, lo), tol);
+    b = snap_to_knot(U_, std::min(b, hi), tol);
+    if (!(a < b))
+        throw InvalidInput("NurbsCurve::sub_curve: [" + format_value(a) + ", " +
+                           format_value(b) + "] is shorter than the knot tolerance");
+    return extract(insert_knot(a, p_).insert_knot(b, p_), a, b);
+}
+
+// [PT] Algorithm A5.6 in effect: every distinct knot in the domain raised to
+// multiplicity p, then one clamped piece per span.
+template <int Dim>
+std::vector<NurbsCurve<Dim>> NurbsCurve<Dim>::bezier_segments() const {
+    const auto [a, b] = domain();
+    std::vector<double> breaks;
+    for (double x : U_)
+        if (x >= a && x <= b && (breaks.empty() || x != breaks.back())) breaks.push_back(x);
+    NurbsCurve refined = *this;
+    for (double x : breaks) refined = refined.insert_knot(x, p_);
+    std::vector<NurbsCurve> segments;
+    segments.reserve(breaks.size() - 1);
+    for (size_t i = 0; i + 1 < breaks.size(); ++i)
+        segments.push_back(extract(refined, breaks[i], breaks[i + 1]));
+    return segments;
+}
+
+template <int Dim>
+NurbsCurve<Dim> NurbsCurve<Dim>::reversed() const {
+    const auto [a, b] = domain();
+    NurbsCurve result = *this;
+    const size_t m = U_.size() - 1;
+    for (size_t i = 0; i <= m; ++i) {
+        const double x = U_[m - i];
+        // Knots inside the domain stay inside it exactly, whatever the rounding.
+        result.U_[i] = (x >= a && x <= b) ? std::min(std::max(a + b - x, a), b) : a + b - x;
+        if (x == a) result.U_[i] = b;
+        if (x == b) result.U_[i] = a;
+    }
+    std::reverse(result.P_.begin(), result.P_.end());
+    std::reverse(result.w_.begin(), result.w_.end());
+    return result;
+}
+
+template <int Dim>
+NurbsCurve<Dim> NurbsCurve<Dim>::reparameterized(double a, double b) const {
+    if (!(a < b) || !std::isfinite(a) || !std::isfinite(b))
+        throw InvalidInput("NurbsCurve::reparameterized: domain [" + format_value(a) + ", " +
+                           format_value(b) + "]; expected finite a < b");
+    const auto [u0, u1] = domain();
+    const double scale = (b - a) / (u1 - u0);
+    NurbsCurve result = *this;
+    for (double& x : result.U_) {
+        if (x == u0) x = a;
+        else if (x == u1) x = b;
+        else if (x > u0 && x < u1) x = std::min(std::max(a + (x - u0) * scale, a), b);
+        else x = a + (x - u0) * scale;
+    }
+    return result;
+}
+
+template <int Dim>
+typename NurbsCurve<Dim>::Box NurbsCurve<Dim>::control_box() const {
+    Box box;
+    for (const Point& P : P_) box.extend(P);
+    return box;
+}
+
+template <int Dim>
+NurbsCurve<Dim> NurbsCurve<Dim>::transformed(
+    const Eigen::Transform<double, Dim, Eigen::Affine>& T) const {
+    NurbsCurve result = *this;
+    for (Point& P : result.P_) P = T * P;
+    return result;
+}
+
+template class NurbsCurve<2>;
+template class NurbsCurve<3>;
+
+}  // namespace trimkit::geom

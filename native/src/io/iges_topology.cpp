@@ -1,0 +1,514 @@
+// Topology entities of IgesReader: 144 trimmed surface (with 142 curves on
+// surface), 143 bounded surface (with 141 boundaries), bare surfaces (natural
+// boundary), and the B-rep 186 manifold solid / 514 shell / 510 face / 508 loop /
+// 504 edge list / 502 vertex list with shared edges. Trim curves end up in the
+// NURBS surface's (u,v) domain: parameter-space curves mapped from the entity's
+// native parameters when the file has them and they agree with the model-space
+// curve, else the model-space curve projected onto the surface.
+#include <algorithm>
+#include <cmath>
+
+#include "geom/error.h"
+#include "io/iges_reader.h"
+#include "io/surface_projection.h"
+#include "io/trim_loop_repair.h"
+
+namespace trimkit::io {
+namespace {
+
+using geom::NurbsCurve2d;
+using geom::NurbsCurve3d;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+// A parameter curve is accepted when the surface at its ends lies within this
+// fraction of the surface size from the model-space curve's ends (it catches
+// wrong maps and swapped parameters, not small modelling gaps).
+constexpr double kParameterCurveMatch = 1e-3;
+// Bridged loop gaps larger than this fraction of the surface size are reported.
+constexpr double kReportedGap = 1e-4;
+
+// One piece of a boundary as the file gives it: model-space curves (in the
+// face's local space, in traversal order) and/or parameter-space curves (native
+// parameters, in the file's order and direction).
+struct Segment {
+    std::vector<NurbsCurve3d> model;
+    std::vector<NurbsCurve2d> param;
+    bool prefer_model = false;
+    int edge = -1;           // first Model::edges index of this segment's pieces
+    bool edge_reversed = false;
+};
+
+std::vector<NurbsCurve3d> reversed_chain(const std::vector<NurbsCurve3d>& c) {
+    std::vector<NurbsCurve3d> r;
+    for (auto it = c.rbegin(); it != c.rend(); ++it) r.push_back(it->reversed());
+    return r;
+}
+
+template <int D>
+Eigen::Matrix<double, D, 1> chain_start(const std::vector<geom::NurbsCurve<D>>& c) {
+    return c.front().evaluate(c.front().domain().first);
+}
+template <int D>
+Eigen::Matrix<double, D, 1> chain_end(const std::vector<geom::NurbsCurve<D>>& c) {
+    return c.back().evaluate(c.back().domain().second);
+}
+
+double surface_size(const geom::NurbsSurface& s) {
+    return std::max(s.control_box().diagonal().norm(), 1e-300);
+}
+
+}  // namespace
+
+namespace {
+
+// Builds the coedges of one loop on surface `S` from its segments.
+struct LoopBuilder {
+    IgesReader& reader;
+    const IgesSurface& S;
+    SurfaceProjector projector;
+    geom::Face& face;
+    int loop_number;
+    bool projected_reported = false;
+
+    LoopBuilder(IgesReader& r, const IgesSurface& s, geom::Face& f, int n)
+        : reader(r), S(s), projector(s.nurbs), face(f), loop_number(n) {}
+
+    Vector3d at(const Vector2d& uv) const {
+        const auto [u0, u1] = S.nurbs.domain_u();
+        const auto [v0, v1] = S.nurbs.domain_v();
+        return S.nurbs.evaluate(std::clamp(uv.x(), u0, u1), std::clamp(uv.y(), v0, v1));
+    }
+
+    void add(const Segment& seg, geom::Loop& loop) {
+        std::vector<NurbsCurve2d> pcs;
+        bool use_param = !seg.param.empty() && (!seg.prefer_model || seg.model.empty());
+        if (use_param) {
+            for (const NurbsCurve2d& c : seg.param) {
+                std::optional<NurbsCurve2d> m = reader.map_to_nurbs(S, c);
+                if (!m) {
+                    use_param = false;
+                    break;
+                }
+                pcs.push_back(std::move(*m));
+            }
+        }
+        if (use_param && !pcs.empty() && !seg.model.empty()) {
+            // Orient the parameter chain like the model chain; reject it when
+            // neither direction matches (a wrong map or a broken file).
+            const double tol = kParameterCurveMatch * surface_size(S.nurbs);
+            const Vector3d m0 = chain_start(seg.model), m1 = chain_end(seg.model);
+            const Vector3d p0 = at(chain_start(pcs)), p1 = at(chain_end(pcs));
+            const double fwd = std::max((p0 - m0).norm(), (p1 - m1).norm());
+            const double bwd = std::max((p0 - m1).norm(), (p1 - m0).norm());
+            if (bwd < fwd && bwd <= tol) {
+                std::vector<NurbsCurve2d> r;
+                for (auto it = pcs.rbegin(); it != pcs.rend(); ++it) r.push_back(it->reversed());
+                pcs = std::move(r);
+            } else if (fwd > tol) {
+                face.warnings.push_back("trim curve " + std::to_string(loop_number) +
+                                        ": parameter curve is off its model-space curve by " +
+                                        geom::format_value(std::min(fwd, bwd)) + "; projected instead");
+                use_param = false;
+            }
+        }
+        if (!use_param || pcs.empty()) {
+            if (seg.model.empty()) return;  // nothing usable: the loop closer bridges it
+            pcs.clear();
+            for (const NurbsCurve3d& k : seg.model) pcs.push_back(project_curve(projector, k));
+            if (!projected_reported) {
+                face.warnings.push_back("trim curve " + std::to_string(loop_number) +
+                                        " projected from model space");
+                projected_reported = true;
+            }
+        }
+        for (std::size_t k = 0; k < pcs.size(); ++k) {
+            geom::Coedge e;
+            e.curve = std::move(pcs[k]);
+            if (seg.edge >= 0) {
+                // Pieces of a composite edge curve are consecutive edges.
+                const std::size_t n = pcs.size();
+                e.edge = seg.edge + static_cast<int>(seg.edge_reversed ? n - 1 - k : k);
+                e.edge_reversed = seg.edge_reversed;
+            }
+            loop.coedges.push_back(std::move(e));
+        }
+    }
+};
+
+void add_points(BoundaryHint* hint, const std::vector<NurbsCurve3d>& curves) {
+    for (const auto& c : curves)
+        for (const auto& p : c.points()) hint->push_back(p);
+}
+
+}  // namespace
+
+// Finishes a face: closes and orients loops, applies the placement, stores it.
+static int store_face(IgesReader& r, geom::Face face, const Eigen::Affine3d& T) {
+    const double tol = kReportedGap * surface_size(face.surface);
+    std::vector<geom::Loop> kept;
+    for (std::size_t i = 0; i < face.loops.size(); ++i) {
+        geom::Loop& loop = face.loops[i];
+        if (!close_loop(loop, face.surface, tol, "loop " + std::to_string(i + 1), &face.warnings)) {
+            if (loop.outer) {
+                face.warnings.push_back("outer loop has no usable curve; natural boundary used");
+                geom::Loop nat = geom::natural_boundary_loop(face.surface);
+                kept.insert(kept.begin(), std::move(nat));
+            } else {
+                face.warnings.push_back("loop " + std::to_string(i + 1) + " has no usable curve; dropped");
+            }
+            continue;
+        }
+        kept.push_back(std::move(loop));
+    }
+    if (kept.empty()) kept.push_back(geom::natural_boundary_loop(face.surface));
+    // Outer loop first.
+    std::stable_partition(kept.begin(), kept.end(), [](const geom::Loop& l) { return l.outer; });
+    for (geom::Loop& l : kept) orient_loop(l, l.outer != face.reversed);
+    face.loops = std::move(kept);
+    if (!T.matrix().isIdentity(0)) face.surface = face.surface.transformed(T);
+    r.seen_box_.extend(face.surface.control_box());
+    r.model().faces.push_back(std::move(face));
+    return static_cast<int>(r.model().faces.size()) - 1;
+}
+
+std::vector<int> IgesReader::read_face_entity(int de, const Eigen::Affine3d& placement) {
+    Nesting guard(*this, de);
+    const IgesDirectoryEntry& e = entry_of(de);
+    geom::Face face;
+    face.source_entity = de;
+    const Eigen::Affine3d T = placement * transform_of(de);
+    std::vector<int> props;
+    int surface_de = 0;
+
+    if (e.type == 144 || e.type == 143) {
+        IgesParameterCursor c(file_, file_.index_of(de));
+        std::vector<int> boundaries;
+        bool first_is_outer = true;
+        bool natural_outer = false;
+        if (e.type == 144) {
+            surface_de = c.pointer("surface");
+            const int n1 = c.integer_or("outer boundary flag N1", 0);
+            const int n2 = c.count("inner boundary count N2", 1);
+            const int outer = c.pointer("outer boundary");
+            for (int i = 0; i < n2; ++i) boundaries.push_back(c.pointer("inner boundary"));
+            if (n1 == 0 || outer == 0) {
+                natural_outer = true;
+                first_is_outer = false;
+            } else {
+                boundaries.insert(boundaries.begin(), outer);
+            }
+        } else {
+            c.integer_or("representation type", 0);
+            surface_de = c.pointer("surface");
+            const int n = c.count("boundary count", 1);
+            for (int i = 0; i < n; ++i) boundaries.push_back(c.pointer("boundary"));
+        }
+        props = c.property_pointers();
+        if (surface_de == 0) c.fail("no surface");
+        // Read the boundaries' curves first: unbounded surfaces are sized from them.
+        std::vector<std::vector<Segment>> loops;
+        BoundaryHint hint;
+        for (int b : boundaries) {
+            std::vector<Segment> segs;
+            if (b == 0) {
+                loops.push_back(std::move(segs));
+                continue;
+            }
+            const IgesDirectoryEntry& be = entry_of(b);
+            IgesParameterCursor q(file_, file_.index_of(b));
+            if (be.type == 142) {
+                q.integer_or("creation flag", 0);
+                q.pointer("surface");
+                const int bp = q.pointer("parameter curve");
+                const int cp = q.pointer("model curve");
+                const int pref = q.integer_or("preference", 0);
+                Segment s;
+                if (cp != 0) {
+                    try {
+                        s.model = curve(cp);
+                    } catch (const geom::ReadError& err) {
+                        face.warnings.push_back("model curve D" + std::to_string(cp) + " skipped: " + err.reason());
+                    }
+                }
+                if (bp != 0) {
+                    try {
+                        s.param = parameter_curve(bp);
+                    } catch (const geom::ReadError& err) {
+                        face.warnings.push_back("parameter curve D" + std::to_string(bp) + " skipped: " + err.reason());
+                    }
+                }
+                s.prefer_model = pref == 2;
+                add_points(&hint, s.model);
+                segs.push_back(std::move(s));
+            } else if (be.type == 141) {
+                const int type = q.integer_or("type", 0);
+                q.integer_or("preference", 0);
+                q.pointer("surface");
+                const int n = q.count("curve count", 3);
+                for (int i = 0; i < n; ++i) {
+                    Segment s;
+                    const int cp = q.pointer("model curve");
+                    const int sense = q.integer_or("sense", 1);
+                    const int k = q.count("parameter curve count", 1);
+                    std::vector<int> pcs;
+                    for (int j = 0; j < k; ++j) pcs.push_back(q.pointer("parameter curve"));
+                    if (cp != 0) {
+                        try {
+                            s.model = sense == 2 ? reversed_chain(curve(cp)) : curve(cp);
+                        } catch (const geom::ReadError& err) {
+                            face.warnings.push_back("model curve D" + std::to_string(cp) + " skipped: " + err.reason());
+                        }
+                    }
+                    if (type == 1) {
+                        try {
+                            for (int p : pcs) {
+                                if (p == 0) continue;
+                                auto pc = parameter_curve(p);
+                                s.param.insert(s.param.end(), pc.begin(), pc.end());
+                            }
+                        } catch (const geom::ReadError& err) {
+                            s.param.clear();
+                            face.warnings.push_back("parameter curve skipped: " + err.reason());
+                        }
+                    }
+                    add_points(&hint, s.model);
+                    segs.push_back(std::move(s));
+                }
+            } else {
+                q.fail("boundary D" + std::to_string(b) + " is entity " + std::to_string(be.type) +
+                       ", expected " + (e.type == 144 ? "142" : "141"));
+            }
+            loops.push_back(std::move(segs));
+        }
+        IgesSurface S = surface(surface_de, hint.empty() ? nullptr : &hint);
+        face.surface = S.nurbs;
+        face.surface_kind = S.kind;
+        if (natural_outer) face.loops.push_back(geom::natural_boundary_loop(S.nurbs));
+        for (std::size_t i = 0; i < loops.size(); ++i) {
+            geom::Loop loop;
+            loop.outer = first_is_outer && i == 0;
+            LoopBuilder lb(*this, S, face, static_cast<int>(i + 1));
+            for (const Segment& s : loops[i]) lb.add(s, loop);
+            face.loops.push_back(std::move(loop));
+        }
+    } else if (is_surface_type(e.type)) {
+        // A bare surface: its natural boundary.
+        surface_de = de;
+        IgesSurface S = surface(de, nullptr);
+        face.surface = S.nurbs;
+        face.surface_kind = S.kind;
+        face.loops.push_back(geom::natural_boundary_loop(S.nurbs));
+        // The surface's own transform is already in S; only the placement remains.
+        face.color = color_of(de);
+        face.name = name_of(de, {});
+        return {store_face(*this, std::move(face), placement)};
+    } else if (e.type == 510) {
+        return {read_brep_face(de, placement, false)};
+    } else {
+        fail(de, "entity " + std::to_string(e.type) + " is not a face");
+    }
+    face.color = color_of(de);
+    if (face.color < 0 && surface_de) face.color = color_of(surface_de);
+    face.name = name_of(de, props);
+    if (face.name.empty() && surface_de) face.name = name_of(surface_de, {});
+    return {store_face(*this, std::move(face), T)};
+}
+
+int IgesReader::read_brep_face(int de, const Eigen::Affine3d& placement, bool reversed) {
+    Nesting guard(*this, de);
+    const IgesDirectoryEntry& e = entry_of(de);
+    if (e.type != 510) fail(de, "shell member is entity " + std::to_string(e.type) + ", expected 510");
+    IgesParameterCursor c(file_, file_.index_of(de));
+    const int surface_de = c.pointer("surface");
+    const int n = c.count("loop count", 1, 1);
+    const int outer_flag = c.integer_or("outer loop flag", 1);
+    std::vector<int> loop_des;
+    for (int i = 0; i < n; ++i) loop_des.push_back(c.pointer("loop"));
+    const std::vector<int> props = c.property_pointers();
+    if (surface_de == 0) c.fail("no surface");
+
+    geom::Face face;
+    face.source_entity = de;
+    face.reversed = reversed;
+    std::vector<std::vector<Segment>> loops;
+    BoundaryHint hint;
+    for (int l : loop_des) {
+        std::vector<Segment> segs;
+        if (l == 0 || entry_of(l).type != 508) {
+            face.warnings.push_back("loop D" + std::to_string(l) + " is not a 508 loop; skipped");
+            loops.push_back(std::move(segs));
+            continue;
+        }
+        IgesParameterCursor q(file_, file_.index_of(l));
+        const int ne = q.count("edge count", 5);
+        for (int i = 0; i < ne; ++i) {
+            const int type = q.integer_or("edge type", 0);
+            const int list = q.pointer("edge list");
+            const int index = q.integer("edge index");
+            const int of = q.integer_or("orientation flag", 1);
+            const int k = q.count("parameter curve count", 2);
+            std::vector<int> pcs;
+            for (int j = 0; j < k; ++j) {
+                q.integer_or("isoparametric flag", 0);
+                pcs.push_back(q.pointer("parameter curve"));
+            }
+            if (type != 0 || list == 0) continue;  // a vertex: bridged by the loop closer
+            Segment s;
+            s.edge_reversed = of == 0;
+            try {
+                const auto [first, local] = brep_edge(list, index, placement);
+                s.edge = first;
+                s.model = s.edge_reversed ? reversed_chain(*local) : *local;
+            } catch (const geom::ReadError& err) {
+                face.warnings.push_back("edge " + std::to_string(index) + " of D" + std::to_string(list) +
+                                        " skipped: " + err.reason());
+            }
+            try {
+                for (int p : pcs) {
+                    if (p == 0) continue;
+                    auto pc = parameter_curve(p);
+                    s.param.insert(s.param.end(), pc.begin(), pc.end());
+                }
+            } catch (const geom::ReadError& err) {
+                s.param.clear();
+                face.warnings.push_back("parameter curve skipped: " + err.reason());
+            }
+            add_points(&hint, s.model);
+            segs.push_back(std::move(s));
+        }
+        loops.push_back(std::move(segs));
+    }
+    IgesSurface S = surface(surface_de, hint.empty() ? nullptr : &hint);
+    face.surface = S.nurbs;
+    face.surface_kind = S.kind;
+    // Without the outer flag, the loop with the largest extent is the outer one.
+    int outer_index = 0;
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+        geom::Loop loop;
+        LoopBuilder lb(*this, S, face, static_cast<int>(i + 1));
+        for (const Segment& s : loops[i]) lb.add(s, loop);
+        face.loops.push_back(std::move(loop));
+    }
+    if (outer_flag == 0) {
+        double best = -1;
+        for (std::size_t i = 0; i < face.loops.size(); ++i) {
+            const double a = std::fabs(signed_area(face.loops[i]));
+            if (a > best) {
+                best = a;
+                outer_index = static_cast<int>(i);
+            }
+        }
+    }
+    if (!face.loops.empty()) face.loops[outer_index].outer = true;
+    face.color = color_of(de);
+    if (face.color < 0) face.color = color_of(surface_de);
+    face.name = name_of(de, props);
+    if (face.name.empty()) face.name = name_of(surface_de, {});
+    return store_face(*this, std::move(face), placement * transform_of(de));
+}
+
+std::pair<int, const std::vector<geom::NurbsCurve3d>*> IgesReader::brep_edge(
+    int list, int index, const Eigen::Affine3d& placement) {
+    auto it = edge_index_.find({list, index});
+    if (it != edge_index_.end()) return {it->second, &curve(edge_curve_.at({list, index}))};
+    const IgesDirectoryEntry& le = entry_of(list);
+    if (le.type != 504) fail(list, "edge list pointer refers to entity " + std::to_string(le.type));
+    IgesParameterCursor c(file_, file_.index_of(list));
+    const int n = c.count("edge count", 5);
+    if (index < 1 || index > n)
+        c.fail("edge index " + std::to_string(index) + " is outside 1.." + std::to_string(n));
+    c.skip(static_cast<std::size_t>(index - 1) * 5);
+    const int cu = c.pointer("edge curve");
+    const int sv = c.pointer("start vertex list"), si = c.integer_or("start vertex index", 0);
+    const int tv = c.pointer("end vertex list"), ti = c.integer_or("end vertex index", 0);
+    if (cu == 0) c.fail("edge " + std::to_string(index) + " has no curve");
+    const std::vector<geom::NurbsCurve3d>& local = curve(cu);
+    const int first = static_cast<int>(model_.edges.size());
+    const Eigen::Affine3d T = placement;
+    for (const auto& k : local) {
+        geom::Edge edge;
+        edge.curve = T.matrix().isIdentity(0) ? k : k.transformed(T);
+        model_.edges.push_back(std::move(edge));
+    }
+    auto vertex = [&](int vl, int vi) -> std::optional<Vector3d> {
+        if (vl == 0 || entry_of(vl).type != 502) return std::nullopt;
+        try {
+            IgesParameterCursor v(file_, file_.index_of(vl));
+            const int nv = v.count("vertex count", 3);
+            if (vi < 1 || vi > nv) return std::nullopt;
+            v.skip(static_cast<std::size_t>(vi - 1) * 3);
+            return T * (transform_of(vl) * v.point("vertex"));
+        } catch (const geom::ReadError&) {
+            return std::nullopt;
+        }
+    };
+    model_.edges[first].start = vertex(sv, si);
+    model_.edges.back().end = vertex(tv, ti);
+    edge_index_[{list, index}] = first;
+    edge_curve_[{list, index}] = cu;
+    return {first, &local};
+}
+
+int IgesReader::read_body(int de, const Eigen::Affine3d& placement) {
+    Nesting guard(*this, de);
+    const IgesDirectoryEntry& e = entry_of(de);
+    IgesParameterCursor c(file_, file_.index_of(de));
+    geom::Body body;
+    // (shell, flipped) pairs.
+    std::vector<std::pair<int, bool>> shells;
+    if (e.type == 186) {
+        const int shell = c.pointer("shell");
+        const int sof = c.integer_or("shell orientation", 1);
+        const int nv = c.count("void count", 2);
+        shells.emplace_back(shell, sof == 0);
+        for (int i = 0; i < nv; ++i) {
+            const int v = c.pointer("void shell");
+            const int vof = c.integer_or("void orientation", 1);
+            shells.emplace_back(v, vof == 0);
+        }
+        body.closed = true;
+    } else if (e.type == 514) {
+        shells.emplace_back(de, false);
+        body.closed = e.form != 2;
+    } else {
+        fail(de, "entity " + std::to_string(e.type) + " is not a body");
+    }
+    const std::vector<int> props = c.property_pointers();
+    body.name = name_of(de, props);
+    const Eigen::Affine3d T = placement * transform_of(de);
+    edge_index_.clear();
+    edge_curve_.clear();
+    const int body_color = color_of(de);
+    for (const auto& [shell, flipped] : shells) {
+        if (shell == 0) continue;
+        if (entry_of(shell).type != 514) {
+            warn("D" + std::to_string(de) + ": shell D" + std::to_string(shell) + " is not a 514 shell; skipped");
+            continue;
+        }
+        IgesParameterCursor s(file_, file_.index_of(shell));
+        const int nf = s.count("face count", 2);
+        std::vector<std::pair<int, int>> faces;
+        for (int i = 0; i < nf; ++i) {
+            const int f = s.pointer("face");
+            const int of = s.integer_or("face orientation", 1);
+            faces.emplace_back(f, of);
+        }
+        const Eigen::Affine3d Ts = shell == de ? T : T * transform_of(shell);
+        for (const auto& [f, of] : faces) {
+            if (f == 0) continue;
+            try {
+                const int index = read_brep_face(f, Ts, (of == 0) != flipped);
+                if (model_.faces[index].color < 0) model_.faces[index].color = body_color;
+                body.faces.push_back(index);
+            } catch (const geom::ReadError& err) {
+                warn("D" + std::to_string(f) + ": face skipped: " + err.reason() + " (line " +
+                     std::to_string(err.line()) + ")");
+            }
+        }
+    }
+    model_.bodies.push_back(std::move(body));
+    return static_cast<int>(model_.bodies.size()) - 1;
+}
+
+}  // namespace trimkit::io

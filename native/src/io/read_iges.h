@@ -1,0 +1,24 @@
+// Reading IGES 5.3 files into a geom::Model: trimmed and bounded surfaces,
+// B-rep solids with shared edges, surfaces with their natural boundary, 124
+// transforms applied and 308/408 subfigure instances flattened (Model::faces
+// holds every placement). Lengths stay in the file's units (Model::units,
+// Model::scale_to_metres).
+#pragma once
+
+#include <string>
+
+#include "geom/model.h"
+
+namespace trimkit::io {
+
+// Reads the file at `path`. Throws geom::ReadError ("FILE:LINE: reason") when
+// the file cannot be opened, is not IGES, is truncated, or none of its surface
+// entities yields a face. Entities that cannot be read (unsupported types,
+// broken data, dangling pointers) are skipped with a message in
+// Model::warnings ("D123: ..."); per-face remarks go to Face::warnings.
+geom::Model read_iges(const std::string& path);
+
+// The same for IGES text already in memory; `name` is used in messages.
+geom::Model read_iges_text(const std::string& text, const std::string& name);
+
+}  // namespace trimkit::io

@@ -1,0 +1,50 @@
+// SurfaceProjector: point inversion on a NurbsSurface (closest (u,v) to a
+// model-space point) and the parameter-space image of a model-space curve, for
+// trim curves given only in model space. Coarse grid start, then Newton on
+// |S(u,v) - x|² [PT] Sec. 6.1 (eq. 6.5-6.7), clamped to the domain; on closed
+// directions and at poles the previous point of a curve decides the seam side.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geom/nurbs_curve.h"
+#include "geom/nurbs_surface.h"
+
+namespace trimkit::io {
+
+class SurfaceProjector {
+public:
+    explicit SurfaceProjector(const geom::NurbsSurface& surface);
+
+    // (u,v) of the closest surface point to x. With `near`, Newton also starts
+    // from it, and a seam or pole keeps the side / the u (or v) of `near`.
+    Eigen::Vector2d invert(const Eigen::Vector3d& x, const Eigen::Vector2d* near = nullptr) const;
+
+    bool closed_u() const { return closed_u_; }
+    bool closed_v() const { return closed_v_; }
+    const geom::NurbsSurface& surface() const { return s_; }
+    double size() const { return size_; }
+
+private:
+    Eigen::Vector2d newton(const Eigen::Vector3d& x, Eigen::Vector2d uv) const;
+
+    const geom::NurbsSurface& s_;
+    double u0_, u1_, v0_, v1_;
+    int nu_, nv_;
+    std::vector<Eigen::Vector3d> grid_;  // nu_ x nv_ samples, v fastest
+    bool closed_u_ = false, closed_v_ = false;
+    double size_ = 1;
+};
+
+// The parameter-space curve of model-space curve `c` on the projector's surface:
+// exact (control points mapped) when the surface is an affine parallelogram,
+// else points sampled along c, inverted, and joined by a degree-1 curve on c's
+// parameters. `max_distance` (optional) receives the largest distance between
+// c's samples and the surface.
+geom::NurbsCurve2d project_curve(const SurfaceProjector& projector, const geom::NurbsCurve3d& c,
+                                 double* max_distance = nullptr);
+
+}  // namespace trimkit::io
