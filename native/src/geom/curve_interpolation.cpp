@@ -221,8 +221,15 @@ NurbsCurve2d refit_mapped_curve(const NurbsCurve2d& c,
             bool ok = true;
             for (size_t i = 0; i + 1 < t.size(); ++i) {
                 const double mid = 0.5 * (t[i] + t[i + 1]);
-                if ((fit.evaluate(mid) - mapped(mid)).norm() >= tolerance && mid > t[i] &&
-                    mid < t[i + 1]) {
+                const double deviation = (fit.evaluate(mid) - mapped(mid)).norm();
+                if (deviation >= tolerance) {
+                    if (!(mid > t[i] && mid < t[i + 1])) {
+                        std::ostringstream msg;
+                        msg << "refit_mapped_curve: deviation " << deviation << " at curve parameter "
+                            << mid << " stays above tolerance " << tolerance
+                            << " down to the smallest interval (is the map discontinuous?)";
+                        throw NumericalFailure(msg.str());
+                    }
                     refined.push_back(mid);
                     ok = false;
                 }

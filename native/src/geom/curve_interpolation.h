@@ -44,8 +44,8 @@ constexpr int kMaxRefitSamples = 4096;
 
 // Coordinate lines of the source plane across which a map is only C1 (e.g. the
 // interior knot angles of an ArcParameterMap, ArcParameterMap::angles() without
-// its ends): a cubic fit across them converges only like h², so the refit puts a
-// C0 knot wherever the curve crosses one.
+// its ends). A cubic fit across them converges slowly (only the refinement at
+// the crossing saves it), so the refit puts a C0 knot wherever the curve crosses one.
 struct MapBreaks {
     std::vector<double> u;  // lines x = u[i]
     std::vector<double> v;  // lines y = v[i]

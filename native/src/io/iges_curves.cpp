@@ -46,8 +46,10 @@ NurbsCurve3d conic_104(IgesParameterCursor& c) {
     const double A = c.real_or("A", 0), B = c.real_or("B", 0), C = c.real_or("C", 0);
     const double D = c.real_or("D", 0), E = c.real_or("E", 0), F = c.real_or("F", 0);
     const double zt = c.real_or("ZT", 0);
-    const Eigen::Vector2d P0(c.real("X1"), c.real("Y1"));
-    const Eigen::Vector2d P2(c.real("X2"), c.real("Y2"));
+    // Separate statements: the order of reads must be the file's order.
+    const double x1 = c.real("X1"), y1 = c.real("Y1");
+    const double x2 = c.real("X2"), y2 = c.real("Y2");
+    const Eigen::Vector2d P0(x1, y1), P2(x2, y2);
     const double scale = std::max({std::fabs(A), std::fabs(B), std::fabs(C)});
     if (!(scale > 0)) c.fail("conic has no quadratic term");
     const int form = c.entry().form;

@@ -98,7 +98,7 @@ std::string IgesReader::name_of(int de, const std::vector<int>& properties) {
     }
     const IgesDirectoryEntry& e = entry_of(de);
     if (e.label.empty()) return {};
-    return e.subscript > 0 ? e.label + std::to_string(e.subscript) : e.label;
+    return e.label;
 }
 
 std::vector<int> IgesReader::translate(int de, const Eigen::Affine3d& placement, int depth) {
@@ -139,7 +139,7 @@ std::vector<int> IgesReader::translate(int de, const Eigen::Affine3d& placement,
         case 408: {
             IgesParameterCursor c(file_, file_.index_of(de));
             const int def = c.pointer("subfigure definition");
-            const Eigen::Vector3d x(c.real_or("X", 0), c.real_or("Y", 0), c.real_or("Z", 0));
+            const Eigen::Vector3d x = c.point("translation");
             const double s = c.real_or("scale", 1.0);
             if (def == 0 || entry_of(def).type != 308)
                 c.fail("subfigure instance does not point to a 308 subfigure definition");

@@ -257,7 +257,7 @@ IgesSurface IgesReader::surface(int de, const BoundaryHint* hint) {
                 break;
             }
             case 108: {
-                Vector3d n(c.real_or("A", 0), c.real_or("B", 0), c.real_or("C", 0));
+                Vector3d n = c.point("normal coefficients A, B, C");
                 const double D = c.real_or("D", 0);
                 const int boundary = c.pointer("bounding curve");
                 const Vector3d loc = c.point("location");

@@ -7,6 +7,8 @@
 // curve, else the model-space curve projected onto the surface.
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 
 #include "geom/error.h"
 #include "io/iges_reader.h"
@@ -25,6 +27,7 @@ using Eigen::Vector3d;
 // fraction of the surface size from the model-space curve's ends (it catches
 // wrong maps and swapped parameters, not small modelling gaps).
 constexpr double kParameterCurveMatch = 1e-3;
+constexpr double kResolutionsMatch = 10.0;
 // Bridged loop gaps larger than this fraction of the surface size are reported.
 constexpr double kReportedGap = 1e-4;
 
@@ -34,7 +37,8 @@ constexpr double kReportedGap = 1e-4;
 struct Segment {
     std::vector<NurbsCurve3d> model;
     std::vector<NurbsCurve2d> param;
-    bool prefer_model = false;
+    bool prefer_model = false;  // 142 preference 2: model-space curve preferred
+    bool prefer_param = false;  // 142 preference 1: parameter curve preferred
     int edge = -1;           // first Model::edges index of this segment's pieces
     bool edge_reversed = false;
 };
@@ -52,6 +56,34 @@ Eigen::Matrix<double, D, 1> chain_start(const std::vector<geom::NurbsCurve<D>>& 
 template <int D>
 Eigen::Matrix<double, D, 1> chain_end(const std::vector<geom::NurbsCurve<D>>& c) {
     return c.back().evaluate(c.back().domain().second);
+}
+
+// Largest distance from the surface images of samples of `pcs` to the
+// polyline through samples of the model chain.
+double chain_distance(const std::vector<NurbsCurve2d>& pcs, const std::vector<NurbsCurve3d>& model,
+                      const std::function<Vector3d(const Vector2d&)>& at) {
+    constexpr int kModelSamples = 32, kParamSamples = 8;
+    std::vector<Vector3d> poly;
+    for (const NurbsCurve3d& k : model) {
+        const auto [a, b] = k.domain();
+        for (int j = 0; j <= kModelSamples; ++j) poly.push_back(k.evaluate(a + (b - a) * j / kModelSamples));
+    }
+    double worst = 0;
+    for (const NurbsCurve2d& c : pcs) {
+        const auto [a, b] = c.domain();
+        for (int j = 0; j <= kParamSamples; ++j) {
+            const Vector3d x = at(c.evaluate(a + (b - a) * j / kParamSamples));
+            double best = std::numeric_limits<double>::infinity();
+            for (std::size_t i = 0; i + 1 < poly.size(); ++i) {
+                const Vector3d d = poly[i + 1] - poly[i];
+                const double len2 = d.squaredNorm();
+                const double t = len2 > 0 ? std::clamp((x - poly[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
+                best = std::min(best, (poly[i] + t * d - x).norm());
+            }
+            worst = std::max(worst, best);
+        }
+    }
+    return worst;
 }
 
 double surface_size(const geom::NurbsSurface& s) {
@@ -96,20 +128,35 @@ struct LoopBuilder {
         if (use_param && !pcs.empty() && !seg.model.empty()) {
             // Orient the parameter chain like the model chain; reject it when
             // neither direction matches (a wrong map or a broken file).
-            const double tol = kParameterCurveMatch * surface_size(S.nurbs);
+            // The file's own resolution (Global field 19) also counts as agreement.
+            const double tol = std::max(kParameterCurveMatch * surface_size(S.nurbs),
+                                        kResolutionsMatch * reader.file().global().min_resolution);
             const Vector3d m0 = chain_start(seg.model), m1 = chain_end(seg.model);
             const Vector3d p0 = at(chain_start(pcs)), p1 = at(chain_end(pcs));
-            const double fwd = std::max((p0 - m0).norm(), (p1 - m1).norm());
-            const double bwd = std::max((p0 - m1).norm(), (p1 - m0).norm());
-            if (bwd < fwd && bwd <= tol) {
-                std::vector<NurbsCurve2d> r;
-                for (auto it = pcs.rbegin(); it != pcs.rend(); ++it) r.push_back(it->reversed());
-                pcs = std::move(r);
-            } else if (fwd > tol) {
-                face.warnings.push_back("trim curve " + std::to_string(loop_number) +
-                                        ": parameter curve is off its model-space curve by " +
-                                        geom::format_value(std::min(fwd, bwd)) + "; projected instead");
-                use_param = false;
+            double off = 0;
+            if ((m0 - m1).norm() > tol) {
+                const double fwd = std::max((p0 - m0).norm(), (p1 - m1).norm());
+                const double bwd = std::max((p0 - m1).norm(), (p1 - m0).norm());
+                if (bwd < fwd && bwd <= tol) {
+                    std::vector<NurbsCurve2d> r;
+                    for (auto it = pcs.rbegin(); it != pcs.rend(); ++it) r.push_back(it->reversed());
+                    pcs = std::move(r);
+                }
+                off = std::min(fwd, bwd);
+            }
+            // A closed chain may start anywhere: compare shapes, not ends
+            // (loop direction is settled later for the whole loop).
+            if (off <= tol) off = chain_distance(pcs, seg.model, [&](const Vector2d& uv) { return at(uv); });
+            if (off > tol) {
+                const std::string n = std::to_string(loop_number);
+                if (seg.prefer_param) {
+                    face.warnings.push_back("trim curve " + n + ": model-space curve is off the parameter curve by " +
+                                            geom::format_value(off) + "; parameter curve used as the file prefers");
+                } else {
+                    face.warnings.push_back("trim curve " + n + ": parameter curve is off its model-space curve by " +
+                                            geom::format_value(off) + "; projected instead");
+                    use_param = false;
+                }
             }
         }
         if (!use_param || pcs.empty()) {
@@ -239,6 +286,7 @@ std::vector<int> IgesReader::read_face_entity(int de, const Eigen::Affine3d& pla
                     }
                 }
                 s.prefer_model = pref == 2;
+                s.prefer_param = pref == 1;
                 add_points(&hint, s.model);
                 segs.push_back(std::move(s));
             } else if (be.type == 141) {

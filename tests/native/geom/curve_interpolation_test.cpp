@@ -107,11 +107,18 @@ TEST(RefitMappedCurve, FailsCleanly) {
     EXPECT_THROW(refit_mapped_curve(line, identity, 0.0), InvalidInput);
     auto nan_map = [](const Eigen::Vector2d& q) { return Eigen::Vector2d(q.x(), NAN); };
     EXPECT_THROW(refit_mapped_curve(line, nan_map, 1e-6), NumericalFailure);
-    // A map with a kink at x = 0.5 nobody declared: a cubic cannot follow it to 1e-14.
-    auto kink = [](const Eigen::Vector2d& q) { return Eigen::Vector2d(q.x(), std::abs(q.x() - 0.5)); };
-    EXPECT_THROW(refit_mapped_curve(line, kink, 1e-14), NumericalFailure);
-    // ... but declared, it is exact.
-    EXPECT_LT(max_deviation(refit_mapped_curve(line, kink, 1e-12, {{0.5}, {}}), line, kink), 1e-12);
+    // Oscillating 10^4 times along the curve: more than kMaxRefitSamples needed.
+    auto wavy = [](const Eigen::Vector2d& q) {
+        return Eigen::Vector2d(q.x(), std::sin(6.3e4 * q.x()));
+    };
+    EXPECT_THROW(refit_mapped_curve(line, wavy, 1e-9), NumericalFailure);
+    // A kink there converges anyway (refinement concentrates at it), and declared
+    // as a break it is exact with the initial samples.
+    auto kink = [](const Eigen::Vector2d& q) { return Eigen::Vector2d(q.x(), std::abs(q.x() - 0.4)); };
+    EXPECT_LT(max_deviation(refit_mapped_curve(line, kink, 1e-10), line, kink), 1e-9);
+    const NurbsCurve2d exact = refit_mapped_curve(line, kink, 1e-12, {{0.4}, {}});
+    EXPECT_LT(max_deviation(exact, line, kink), 1e-12);
+    EXPECT_LT(exact.points().size(), 20u);
 }
 
 }  // namespace

@@ -1,0 +1,186 @@
+#include "tess/approximate_trim_curve.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "geom/error.h"
+#include "tess/derivative_bounds.h"
+#include "tess/homogeneous_bezier.h"
+#include "tess/lift_trim_curve.h"
+#include "tess/simplify_trim_polyline.h"
+
+namespace trimkit::tess {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Homogeneous Bézier control points (w u, w v, w) of c over [t0, t1], one segment.
+std::vector<Eigen::Vector3d> homogeneous_piece(const geom::NurbsCurve2d& c, double t0, double t1) {
+    const geom::NurbsCurve2d sub = c.sub_curve(t0, t1);
+    std::vector<Eigen::Vector3d> h(sub.points().size());
+    for (size_t i = 0; i < h.size(); ++i) {
+        const double w = sub.weights()[i];
+        h[i] << w * sub.points()[i], w;
+    }
+    return h;
+}
+
+// [Balazs] Sec. 5.1: the largest distance of the projected control points from the
+// chord P0 Pn (the convex hull bound; infinite if a weight is not positive).
+double line_bound(const std::vector<Eigen::Vector4d>& P) {
+    for (const auto& h : P)
+        if (!(h.w() > 0.0)) return kInfinity;
+    const Eigen::Vector3d a = project(P.front()), b = project(P.back()), ab = b - a;
+    const double len2 = ab.squaredNorm();
+    double e = 0.0;
+    for (size_t i = 1; i + 1 < P.size(); ++i) {
+        const Eigen::Vector3d x = project(P[i]);
+        const double lambda = len2 > 0.0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+        e = std::max(e, (x - a - lambda * ab).norm());
+    }
+    return e;
+}
+
+// Bound on max_s |c(s) - l(s)|, l(s) = b0 + s (bn - b0) the chord at the same s.
+// c - l = N / W with N(s) = sum w_i B_i^n (b_i - b0) - s W(s) (bn - b0), degree n+1:
+// N_k = (k/(n+1)) a_{k-1} + (1 - k/(n+1)) a_k - (k/(n+1)) w_{k-1} (bn - b0),
+// a_i = w_i (b_i - b0) (degree elevation and s B_i^n = (i+1)/(n+1) B_{i+1}^{n+1};
+// re-derived). |c - l| <= max |N_k| / min w_i.
+double chord_parameter_bound(const std::vector<Eigen::Vector3d>& h) {
+    const int n = static_cast<int>(h.size()) - 1;
+    double w_min = kInfinity;
+    for (const auto& x : h) w_min = std::min(w_min, x.z());
+    if (!(w_min > 0.0)) return kInfinity;
+    const Eigen::Vector2d b0 = project(h.front()), d = project(h.back()) - b0;
+    auto a = [&](int i) -> Eigen::Vector2d {
+        if (i < 0 || i > n) return Eigen::Vector2d::Zero();
+        return h[i].head<2>() - h[i].z() * b0;
+    };
+    double e = 0.0;
+    for (int k = 1; k <= n; ++k) {
+        const double r = double(k) / (n + 1);
+        const Eigen::Vector2d N = r * a(k - 1) + (1.0 - r) * a(k) - r * h[k - 1].z() * d;
+        e = std::max(e, N.norm());
+    }
+    return e / w_min;
+}
+
+struct Subdivider {
+    double budget;       // γ·tol
+    double speed;        // M^u + M^v over the piece's region
+    std::vector<double>* s_out;  // right ends of accepted pieces, in order
+
+    void run(const std::vector<Eigen::Vector4d>& P3, const std::vector<Eigen::Vector3d>& P2,
+             double sa, double sb, int depth) {
+        const double e = line_bound(P3) + speed * chord_parameter_bound(P2);
+        if (e <= budget || depth >= kMaxSubdivisionDepth) {
+            s_out->push_back(sb);
+            return;
+        }
+        std::vector<Eigen::Vector4d> L3, R3;
+        std::vector<Eigen::Vector3d> L2, R2;
+        split_bezier(P3, 0.5, &L3, &R3);
+        split_bezier(P2, 0.5, &L2, &R2);
+        const double sm = 0.5 * (sa + sb);
+        run(L3, L2, sa, sm, depth + 1);
+        run(R3, R2, sm, sb, depth + 1);
+    }
+};
+
+// [Yang] eq. 9-11: the number of uniform steps for c over [t0, t1].
+long yang_steps(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, double t0, double t1,
+                double tol) {
+    const geom::NurbsCurve2d sub = c.sub_curve(t0, t1);
+    const CurveDerivativeBounds Mc = curve_derivative_bounds(sub);
+    const geom::NurbsCurve2d::Box box = sub.control_box();
+    const SurfaceDerivativeBounds Ms =
+        surface_derivative_bounds(S, Eigen::AlignedBox2d(box.min(), box.max()));
+    const double M1 = (Ms.Mu + Ms.Mv) * Mc.Mtt / 8.0;
+    const double M2 = (Ms.Muu * Mc.Mtu * Mc.Mtu + 2.0 * Ms.Muv * Mc.Mtu * Mc.Mtv +
+                       Ms.Mvv * Mc.Mtv * Mc.Mtv) / 8.0;
+    if (!(M1 + M2 > 0.0)) return 1;
+    const double dt = std::sqrt(tol / (M1 + M2));
+    return static_cast<long>(std::clamp(std::ceil((t1 - t0) / dt), 1.0, double(kMaxStepsPerPiece)));
+}
+
+// Appends c(t), S(c(t)) for t = t0 + (t1 - t0) s, s in `s_values` (ascending, s > 0);
+// t0's point is expected to be present already.
+void append_points(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, double t0, double t1,
+                   const std::vector<double>& s_values, TrimPolyline* out) {
+    for (double s : s_values) {
+        PolylinePoint p;
+        p.t = s >= 1.0 ? t1 : t0 + s * (t1 - t0);
+        p.uv = c.evaluate(p.t);
+        p.xyz = S.evaluate(p.uv.x(), p.uv.y());
+        out->points.push_back(p);
+    }
+}
+
+std::vector<double> uniform_steps(long n) {
+    std::vector<double> s(n);
+    for (long k = 1; k <= n; ++k) s[k - 1] = double(k) / n;
+    return s;
+}
+
+}  // namespace
+
+TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
+                                    double tolerance, TrimMethod method) {
+    if (!std::isfinite(tolerance) || !(tolerance > 0.0))
+        throw geom::InvalidInput("approximate_trim_curve: tolerance = " +
+                                 geom::format_value(tolerance) + "; expected a finite value > 0");
+    TrimPolyline out;
+    const double ta = c.domain().first;
+    append_points(S, c, ta, ta, {1.0}, &out);
+
+    switch (method) {
+    case TrimMethod::kBezier3d: {
+        const double budget = kTrimGamma * tolerance;
+        for (const LiftedPiece& piece : lift_trim_curve(S, c)) {
+            if (!piece.exact) {
+                const long n = yang_steps(S, c, piece.t0, piece.t1, budget);
+                append_points(S, c, piece.t0, piece.t1, uniform_steps(n), &out);
+                continue;
+            }
+            const std::vector<Eigen::Vector3d> P2 = homogeneous_piece(c, piece.t0, piece.t1);
+            Eigen::AlignedBox2d box;
+            for (const auto& h : P2) box.extend(project(h));
+            const SurfaceDerivativeBounds Ms = surface_derivative_bounds(S, box);
+            std::vector<double> s_values;
+            Subdivider{budget, Ms.Mu + Ms.Mv, &s_values}.run(piece.P, P2, 0.0, 1.0, 0);
+            append_points(S, c, piece.t0, piece.t1, s_values, &out);
+        }
+        const geom::NurbsCurve2d::Box box = c.control_box();
+        const SurfaceDerivativeBounds Ms =
+            surface_derivative_bounds(S, Eigen::AlignedBox2d(box.min(), box.max()));
+        simplify_trim_polyline(&out, (1.0 - kTrimGamma) * tolerance, Ms.Mu + Ms.Mv);
+        break;
+    }
+    case TrimMethod::kYang: {
+        const std::vector<double> breaks = trim_curve_breaks(S, c);
+        for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+            const long n = yang_steps(S, c, breaks[i], breaks[i + 1], tolerance);
+            append_points(S, c, breaks[i], breaks[i + 1], uniform_steps(n), &out);
+        }
+        break;
+    }
+    case TrimMethod::kParam: {
+        for (const geom::NurbsCurve2d& seg : c.bezier_segments()) {
+            const auto [t0, t1] = seg.domain();
+            const double Mtt = curve_derivative_bounds(seg).Mtt;
+            const long n = static_cast<long>(std::clamp(
+                std::ceil((t1 - t0) * std::sqrt(Mtt / (8.0 * tolerance))), 1.0,
+                double(kMaxStepsPerPiece)));
+            append_points(S, c, t0, t1, uniform_steps(n), &out);
+        }
+        break;
+    }
+    }
+    return out;
+}
+
+}  // namespace trimkit::tess

@@ -1,0 +1,86 @@
+#include "tess/bilinear_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace trimkit::tess {
+namespace {
+
+// Splits closer than this to a patch side make slivers without reducing the error.
+constexpr double kMinSplit = 0.1;
+
+}  // namespace
+
+BilinearError bilinear_error(const BezierPatch& patch, ErrorMode mode) {
+    const int m = patch.p, n = patch.q;
+    Eigen::Vector3d P[(geom::kMaxDegree + 1) * (geom::kMaxDegree + 1)];
+    auto at = [&](int i, int j) -> Eigen::Vector3d& { return P[i * (n + 1) + j]; };
+    double w_min = patch.point(0, 0)[3], w_max = w_min;
+    for (int i = 0; i <= m; ++i)
+        for (int j = 0; j <= n; ++j) {
+            const double w = patch.point(i, j)[3];
+            w_min = std::min(w_min, w);
+            w_max = std::max(w_max, w);
+            at(i, j) = mode == ErrorMode::kApproximate
+                           ? patch.evaluate(static_cast<double>(i) / m, static_cast<double>(j) / n)
+                           : patch.euclidean(i, j);
+        }
+    const Eigen::Vector3d C00 = at(0, 0), Cm0 = at(m, 0), C0n = at(0, n), Cmn = at(m, n);
+    const Eigen::Vector3d e_u = Cm0 - C00, e_v = C0n - C00, d = C00 - Cm0 - C0n + Cmn;
+
+    // D_ij = P_ij - S~(i/m, j/n); S~(a,b) = C00 + a e_u + b e_v + a b d (re-derived).
+    Eigen::Vector3d D[(geom::kMaxDegree + 1) * (geom::kMaxDegree + 1)];
+    double max_d = -1.0, dev_u = 0.0, dev_v = 0.0;
+    int k = 0, l = 0;
+    for (int i = 0; i <= m; ++i)
+        for (int j = 0; j <= n; ++j) {
+            const double a = static_cast<double>(i) / m, b = static_cast<double>(j) / n;
+            const Eigen::Vector3d Dij = at(i, j) - (C00 + a * e_u + b * e_v + a * b * d);
+            D[i * (n + 1) + j] = Dij;
+            const double len = Dij.norm();
+            if (len > max_d) max_d = len, k = i, l = j;
+            // Deviation from the chords along u (row j) and along v (column i).
+            dev_u = std::max(dev_u, (at(i, j) - ((1 - a) * at(0, j) + a * at(m, j))).norm());
+            dev_v = std::max(dev_v, (at(i, j) - ((1 - b) * at(i, 0) + b * at(i, n))).norm());
+        }
+    const double twist = 0.25 * d.norm();
+
+    BilinearError result;
+    if (mode == ErrorMode::kApproximate) {
+        result.bound = max_d + twist;
+    } else {
+        double diam = 0.0;
+        const int count = (m + 1) * (n + 1);
+        for (int a = 0; a < count; ++a)
+            for (int b = a + 1; b < count; ++b) diam = std::max(diam, (D[a] - D[b]).squaredNorm());
+        diam = std::sqrt(diam);
+        const double rho = w_max / w_min - 1.0;
+        const double R = rho * ((e_u.norm() + d.norm()) / (2.0 * std::sqrt(double(m))) +
+                                (e_v.norm() + d.norm()) / (2.0 * std::sqrt(double(n))));
+        result.bound = diam + twist + 2.0 * R;
+    }
+    if (!std::isfinite(result.bound)) result.bound = std::numeric_limits<double>::infinity();
+
+    // Split at the control point of largest bilinear error [Balazs] Sec. 5.2, in the
+    // direction whose chords it deviates from most (departure: the paper compares the
+    // 3D distance of S(k/m, l/n) to the two split lines; this picks the same direction
+    // on cylinders and needs no extra evaluation).
+    const bool interior_u = k > 0 && k < m, interior_v = l > 0 && l < n;
+    if (twist >= max_d || (!interior_u && !interior_v)) {
+        // Twist-dominated (or bilinear-exact) patch: halve the longer direction.
+        const double len_u = e_u.norm() + (Cmn - C0n).norm();
+        const double len_v = e_v.norm() + (Cmn - Cm0).norm();
+        result.split_in_u = len_u >= len_v;
+        result.split = 0.5;
+    } else if (interior_u && (!interior_v || dev_u >= dev_v)) {
+        result.split_in_u = true;
+        result.split = static_cast<double>(k) / m;
+    } else {
+        result.split_in_u = false;
+        result.split = static_cast<double>(l) / n;
+    }
+    result.split = std::clamp(result.split, kMinSplit, 1.0 - kMinSplit);
+    return result;
+}
+
+}  // namespace trimkit::tess

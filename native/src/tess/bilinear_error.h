@@ -1,0 +1,33 @@
+// Bilinear error of a Bezier patch: how far the two triangles over the patch's
+// corners (or any triangulation of points inside its rectangle) can be from the
+// surface, and where to split the patch to reduce it. [Balazs] Sec. 5.2, [Kah02].
+// Distances are in model units; split parameters are local to the patch, in (0,1).
+#pragma once
+
+#include "tess/bezier_patch.h"
+#include "tess/tessellation_options.h"
+
+namespace trimkit::tess {
+
+struct BilinearError {
+    double bound = 0.0;      // error bound (kGuaranteed) or estimate (kApproximate)
+    bool split_in_u = true;  // direction of the split that reduces it most
+    double split = 0.5;      // local split parameter in that direction, in (0,1)
+};
+
+// [Balazs] Sec. 5.2: e <= e_bilin + 1/4 |P00 - Pm0 - P0n + Pmn| with
+// e_bilin = max_ij |P_ij - S~(i/m, j/n)|, S~ the bilinear interpolant of the corners
+// (re-derived: S~(a,b) = (1-a)(1-b) P00 + a(1-b) Pm0 + (1-a) b P0n + a b Pmn, a along u).
+// kGuaranteed departs in two places, so the bound holds for every triangulation of
+// points of the rectangle that lie on S, not only for the two corner triangles:
+//  - e_bilin is replaced by diam{P_ij - S~(i/m,j/n)} (contains 0): S - S~ is a convex
+//    combination of these differences, at the triangle vertices and inside alike;
+//    the 1/4 |twist| term bounds the linear interpolation of a b on any triangle
+//    inside the square (|Cov(a,b)| <= 1/4);
+//  - rational patches add 2R, R = rho ((|e_u| + |d|) / (2 sqrt m) + (|e_v| + |d|) /
+//    (2 sqrt n)), rho = w_max / w_min - 1, bounding sum_ij r_ij S~(i/m,j/n) - S~(u,v)
+//    for the rational basis r_ij (derived here, not in the paper).
+// kApproximate: the paper's approximate measure, P_ij replaced by S(i/m, j/n).
+BilinearError bilinear_error(const BezierPatch& patch, ErrorMode mode);
+
+}  // namespace trimkit::tess

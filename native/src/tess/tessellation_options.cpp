@@ -1,0 +1,23 @@
+#include "tess/tessellation_options.h"
+
+#include <cmath>
+
+#include "geom/error.h"
+
+namespace trimkit::tess {
+
+void validate(const TessellationOptions& options) {
+    using geom::format_value;
+    if (!(std::isfinite(options.tolerance) && options.tolerance > 0.0))
+        throw geom::InvalidInput("TessellationOptions: tolerance = " +
+                                 format_value(options.tolerance) +
+                                 "; expected a finite value > 0 (model units)");
+    if (!(std::isfinite(options.angle) && options.angle >= 0.0 && options.angle <= M_PI))
+        throw geom::InvalidInput("TessellationOptions: angle = " + format_value(options.angle) +
+                                 "; expected radians in [0, pi]");
+    if (options.threads < 0)
+        throw geom::InvalidInput("TessellationOptions: threads = " +
+                                 std::to_string(options.threads) + "; expected >= 0 (0 = all cores)");
+}
+
+}  // namespace trimkit::tess
