@@ -97,12 +97,6 @@ void IgesReader::warn_unsupported(int de, const std::string& what) {
          (what.empty() ? type_name(type) : what) + ") not supported");
 }
 
-double IgesReader::model_size() const {
-    if (!seen_box_.isEmpty()) return seen_box_.diagonal().norm();
-    if (file_.global().max_coordinate > 0) return 2 * file_.global().max_coordinate;
-    return 1.0;
-}
-
 std::vector<int> IgesReader::references(int index) {
     const IgesDirectoryEntry& e = file_.entry(index);
     std::vector<int> out;

@@ -121,9 +121,6 @@ public:
     };
 
     geom::Model& model() { return model_; }
-    // Size of the model (diagonal of the boxes seen so far, or Global field 20),
-    // for relative tolerances.
-    double model_size() const;
 
 private:
     std::vector<int> references(int index);
@@ -143,7 +140,7 @@ public:
     // placement: (504 de, 1-based index) -> edge index.
     std::map<std::pair<int, int>, int> edge_index_;
     std::map<std::pair<int, int>, int> edge_curve_;  // same key -> curve entity
-    // Size used by model_size(); updated as surfaces are read.
+    // Box of the faces' control points read so far.
     Eigen::AlignedBox3d seen_box_;
 };
 

@@ -83,7 +83,7 @@ TEST(IgesFile, ParsesGlobalDirectoryAndParameters) {
     EXPECT_EQ(d.subordinate, 1);
     EXPECT_EQ(d.color, 2);
     EXPECT_EQ(d.label, "CURVE1");
-    EXPECT_EQ(d.line, 3);  // after one S and one G line
+    EXPECT_EQ(d.line, 4);  // after one S and two G lines
     auto p = f.parameters(0);
     ASSERT_EQ(p.size(), 6u);
     EXPECT_DOUBLE_EQ(p[3].number, 10.0);
@@ -94,17 +94,23 @@ TEST(IgesFile, ParsesGlobalDirectoryAndParameters) {
 
 TEST(IgesFile, ContinuationLinesJoinParametersAndStrings) {
     IgesTextBuilder b;
-    b.set_parameter_width(10);  // forces every parameter list over several lines
-    b.add({406, "1,22Ha name over two lines;", 15});
+    const std::string name(90, 'x');
+    b.add({406, "1,90H" + name + ";", 15});  // the string runs over columns 64
+    IgesEntitySpec line{110, "1.5,2.5,3.5,4.5,5.5,6.5;"};
+    line.width = 12;  // numbers broken after commas, lines blank-padded
+    b.add(line);
     const IgesFile f = IgesFile::parse(b.text(), "c.igs");
     auto p = f.parameters(0);
     ASSERT_EQ(p.size(), 2u);
-    EXPECT_EQ(p[1].text, "a name over two lines");
-    EXPECT_GT(p[1].line, 3);  // starts on a continuation line
+    EXPECT_EQ(p[1].text, name);
+    auto q = f.parameters(1);
+    ASSERT_EQ(q.size(), 6u);
+    EXPECT_DOUBLE_EQ(q[5].number, 6.5);
+    EXPECT_GT(q[5].line, q[0].line);  // read from a continuation line
 }
 
 TEST(IgesFile, CustomDelimitersFromTheGlobalSection) {
-    IgesTextBuilder b("1H/,1H#/4Htest/8Htest.igs/////////1.0/1/2HIN#");
+    IgesTextBuilder b("1H//1H#/4Htest/8Htest.igs/////////1.0/1/2HIN#");
     b.add({110, "0./0./0./1./1./1.#"});
     const IgesFile f = IgesFile::parse(b.text(), "d.igs");
     EXPECT_EQ(f.global().parameter_delimiter, '/');
@@ -167,7 +173,7 @@ TEST(IgesFile, BackPointerMismatchNamesTheLine) {
         f.parameters(0);
         FAIL() << "no ReadError";
     } catch (const geom::ReadError& e) {
-        EXPECT_EQ(e.line(), 5);
+        EXPECT_EQ(e.line(), 6);  // S, two G and two D lines before it
         EXPECT_NE(e.reason().find("D7"), std::string::npos);
     }
 }

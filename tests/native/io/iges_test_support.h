@@ -9,6 +9,10 @@
 namespace trimkit::test {
 
 struct IgesEntitySpec {
+    IgesEntitySpec(int type_, std::string params_, int form_ = 0, int transform_ = 0,
+                   std::string status_ = "00000000", int color_ = 0, std::string label_ = "")
+        : type(type_), params(std::move(params_)), form(form_), transform(transform_),
+          status(std::move(status_)), color(color_), label(std::move(label_)) {}
     int type = 0;
     std::string params;  // free-format parameters after the type, ending in the record delimiter
     int form = 0;
@@ -16,6 +20,9 @@ struct IgesEntitySpec {
     std::string status = "00000000";
     int color = 0;
     std::string label;
+    // Parameter lines break at 64 columns (inside strings too, as writers do)
+    // or, when narrower, after the last delimiter that fits.
+    int width = 64;
 };
 
 class IgesTextBuilder {
@@ -30,8 +37,6 @@ public:
         entities_.push_back(std::move(e));
         return static_cast<int>(entities_.size()) * 2 - 1;
     }
-    // Parameter data wraps at `width` columns (64 in real files).
-    void set_parameter_width(int width) { width_ = width; }
 
     std::string text() const {
         std::string out;
@@ -40,10 +45,20 @@ public:
         for (std::size_t i = 0; i < global_.size(); i += 72) out += record(global_.substr(i, 72), 'G', ++g);
         std::vector<std::vector<std::string>> plines;
         for (std::size_t k = 0; k < entities_.size(); ++k) {
-            std::string full = std::to_string(entities_[k].type) + "," + entities_[k].params;
+            const char delimiter = global_.rfind("1H", 0) == 0 ? global_[2] : ',';
+            const int width = entities_[k].width;
+            std::string full = std::to_string(entities_[k].type) + delimiter + entities_[k].params;
             std::vector<std::string> lines;
-            for (std::size_t i = 0; i < full.size(); i += static_cast<std::size_t>(width_))
-                lines.push_back(full.substr(i, static_cast<std::size_t>(width_)));
+            std::size_t i = 0;
+            while (i < full.size()) {
+                std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(width), full.size() - i);
+                if (width < 64 && i + n < full.size()) {
+                    const std::size_t comma = full.rfind(delimiter, i + n - 1);
+                    if (comma != std::string::npos && comma >= i) n = comma + 1 - i;
+                }
+                lines.push_back(full.substr(i, n));
+                i += n;
+            }
             plines.push_back(lines);
         }
         int p = 1, d = 0;
@@ -83,7 +98,6 @@ public:
 private:
     std::string global_;
     std::vector<IgesEntitySpec> entities_;
-    int width_ = 64;
 };
 
 // A bilinear 128 patch over [0,1]² with corners (0,0,0) (10,0,0) (0,10,0) (10,10,0).
