@@ -12,7 +12,7 @@
 
 #include "geom/error.h"
 #include "io/iges_reader.h"
-#include "io/surface_projection.h"
+#include "geom/surface_projector.h"
 #include "io/trim_loop_repair.h"
 
 namespace trimkit::io {
@@ -98,7 +98,7 @@ namespace {
 struct LoopBuilder {
     IgesReader& reader;
     const IgesSurface& S;
-    SurfaceProjector projector;
+    geom::SurfaceProjector projector;
     geom::Face& face;
     int loop_number;
     bool projected_reported = false;
@@ -162,7 +162,7 @@ struct LoopBuilder {
         if (!use_param || pcs.empty()) {
             if (seg.model.empty()) return;  // nothing usable: the loop closer bridges it
             pcs.clear();
-            for (const NurbsCurve3d& k : seg.model) pcs.push_back(project_curve(projector, k));
+            for (const NurbsCurve3d& k : seg.model) pcs.push_back(geom::project_curve(projector, k));
             if (!projected_reported) {
                 face.warnings.push_back("trim curve " + std::to_string(loop_number) +
                                         " projected from model space");

@@ -1,11 +1,11 @@
-#include "io/surface_projection.h"
+#include "geom/surface_projector.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "geom/error.h"
 
-namespace trimkit::io {
+namespace trimkit::geom {
 namespace {
 
 // Newton stops when the step moves the surface point less than this fraction
@@ -33,7 +33,7 @@ int grid_count(const std::vector<double>& U, int p) {
 
 }  // namespace
 
-SurfaceProjector::SurfaceProjector(const geom::NurbsSurface& s) : s_(s) {
+SurfaceProjector::SurfaceProjector(const NurbsSurface& s) : s_(s) {
     std::tie(u0_, u1_) = s.domain_u();
     std::tie(v0_, v1_) = s.domain_v();
     nu_ = grid_count(s.knots_u(), s.degree_u());
@@ -56,10 +56,10 @@ SurfaceProjector::SurfaceProjector(const geom::NurbsSurface& s) : s_(s) {
 
 Eigen::Vector2d SurfaceProjector::newton(const Eigen::Vector3d& x, Eigen::Vector2d uv) const {
     for (int it = 0; it < kNewtonIterations; ++it) {
-        geom::SurfaceDerivatives d;
+        SurfaceDerivatives d;
         try {
             d = s_.derivatives(uv.x(), uv.y());
-        } catch (const geom::NumericalFailure&) {
+        } catch (const NumericalFailure&) {
             break;
         }
         const Eigen::Vector3d r = d.S - x;
@@ -115,11 +115,11 @@ Eigen::Vector2d SurfaceProjector::invert(const Eigen::Vector3d& x, const Eigen::
         }
         // At a pole (a degenerate boundary) one parameter is free: keep near's.
         try {
-            geom::SurfaceDerivatives d = s_.derivatives(uv.x(), uv.y());
+            SurfaceDerivatives d = s_.derivatives(uv.x(), uv.y());
             const double su = d.Su.norm(), sv = d.Sv.norm();
             if (su < 1e-9 * sv) uv.x() = near->x();
             if (sv < 1e-9 * su) uv.y() = near->y();
-        } catch (const geom::NumericalFailure&) {
+        } catch (const NumericalFailure&) {
         }
     }
     return uv;
@@ -129,8 +129,8 @@ namespace {
 
 // Exact inverse for a degree-1 x 1, 2 x 2, non-rational surface whose corners
 // form a parallelogram (planes from IGES 108/190 and planar B-splines).
-std::optional<geom::NurbsCurve2d> affine_inverse(const geom::NurbsSurface& s,
-                                                 const geom::NurbsCurve3d& c) {
+std::optional<NurbsCurve2d> affine_inverse(const NurbsSurface& s,
+                                                 const NurbsCurve3d& c) {
     if (s.degree_u() != 1 || s.degree_v() != 1 || s.count_u() != 2 || s.count_v() != 2 ||
         s.is_rational())
         return std::nullopt;
@@ -152,14 +152,14 @@ std::optional<geom::NurbsCurve2d> affine_inverse(const geom::NurbsSurface& s,
         Eigen::Vector2d ab = Gi * (A.transpose() * (p - P00));
         q.emplace_back(u0 + ab.x() * (u1 - u0), v0 + ab.y() * (v1 - v0));
     }
-    return geom::NurbsCurve2d(c.degree(), c.knots(), std::move(q), c.weights());
+    return NurbsCurve2d(c.degree(), c.knots(), std::move(q), c.weights());
 }
 
 }  // namespace
 
-geom::NurbsCurve2d project_curve(const SurfaceProjector& projector, const geom::NurbsCurve3d& c,
+NurbsCurve2d project_curve(const SurfaceProjector& projector, const NurbsCurve3d& c,
                                  double* max_distance) {
-    const geom::NurbsSurface& s = projector.surface();
+    const NurbsSurface& s = projector.surface();
     if (auto exact = affine_inverse(s, c)) {
         if (max_distance) {
             double m = 0;
@@ -202,7 +202,7 @@ geom::NurbsCurve2d project_curve(const SurfaceProjector& projector, const geom::
     knots.push_back(t.front());
     knots.insert(knots.end(), t.begin(), t.end());
     knots.push_back(t.back());
-    return geom::NurbsCurve2d(1, std::move(knots), std::move(uv));
+    return NurbsCurve2d(1, std::move(knots), std::move(uv));
 }
 
-}  // namespace trimkit::io
+}  // namespace trimkit::geom

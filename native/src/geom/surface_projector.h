@@ -13,11 +13,11 @@
 #include "geom/nurbs_curve.h"
 #include "geom/nurbs_surface.h"
 
-namespace trimkit::io {
+namespace trimkit::geom {
 
 class SurfaceProjector {
 public:
-    explicit SurfaceProjector(const geom::NurbsSurface& surface);
+    explicit SurfaceProjector(const NurbsSurface& surface);
 
     // (u,v) of the closest surface point to x. With `near`, Newton also starts
     // from it, and a seam or pole keeps the side / the u (or v) of `near`.
@@ -25,13 +25,13 @@ public:
 
     bool closed_u() const { return closed_u_; }
     bool closed_v() const { return closed_v_; }
-    const geom::NurbsSurface& surface() const { return s_; }
+    const NurbsSurface& surface() const { return s_; }
     double size() const { return size_; }
 
 private:
     Eigen::Vector2d newton(const Eigen::Vector3d& x, Eigen::Vector2d uv) const;
 
-    const geom::NurbsSurface& s_;
+    const NurbsSurface& s_;
     double u0_, u1_, v0_, v1_;
     int nu_, nv_;
     std::vector<Eigen::Vector3d> grid_;  // nu_ x nv_ samples, v fastest
@@ -44,7 +44,7 @@ private:
 // else points sampled along c, inverted, and joined by a degree-1 curve on c's
 // parameters. `max_distance` (optional) receives the largest distance between
 // c's samples and the surface.
-geom::NurbsCurve2d project_curve(const SurfaceProjector& projector, const geom::NurbsCurve3d& c,
+NurbsCurve2d project_curve(const SurfaceProjector& projector, const NurbsCurve3d& c,
                                  double* max_distance = nullptr);
 
-}  // namespace trimkit::io
+}  // namespace trimkit::geom
