@@ -71,7 +71,7 @@ double chord_parameter_bound(const std::vector<Eigen::Vector3d>& h) {
 
 struct Subdivider {
     double budget;       // γ·tol
-    double speed;        // M^u + M^v over the piece's region
+    double speed;        // sqrt((M^u)² + (M^v)²) over the piece's region
     std::vector<double>* s_out;  // right ends of accepted pieces, in order
 
     void run(const std::vector<Eigen::Vector4d>& P3, const std::vector<Eigen::Vector3d>& P2,
@@ -151,13 +151,13 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
             for (const auto& h : P2) box.extend(project(h));
             const SurfaceDerivativeBounds Ms = surface_derivative_bounds(S, box);
             std::vector<double> s_values;
-            Subdivider{budget, Ms.Mu + Ms.Mv, &s_values}.run(piece.P, P2, 0.0, 1.0, 0);
+            Subdivider{budget, std::hypot(Ms.Mu, Ms.Mv), &s_values}.run(piece.P, P2, 0.0, 1.0, 0);
             append_points(S, c, piece.t0, piece.t1, s_values, &out);
         }
         const geom::NurbsCurve2d::Box box = c.control_box();
         const SurfaceDerivativeBounds Ms =
             surface_derivative_bounds(S, Eigen::AlignedBox2d(box.min(), box.max()));
-        simplify_trim_polyline(&out, (1.0 - kTrimGamma) * tolerance, Ms.Mu + Ms.Mv);
+        simplify_trim_polyline(&out, (1.0 - kTrimGamma) * tolerance, std::hypot(Ms.Mu, Ms.Mv));
         break;
     }
     case TrimMethod::kYang: {

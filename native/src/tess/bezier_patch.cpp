@@ -1,6 +1,8 @@
 #include "tess/bezier_patch.h"
 
+#include <algorithm>
 #include <cassert>
+#include <tuple>
 
 namespace trimkit::tess {
 namespace {

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "geom/bspline_basis.h"
 #include "geom/nurbs_surface.h"
 
 namespace trimkit::tess {

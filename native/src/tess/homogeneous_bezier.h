@@ -24,8 +24,8 @@ template <class V>
 void split_bezier(const std::vector<V>& P, double s, std::vector<V>* left, std::vector<V>* right) {
     const size_t n = P.size();
     std::vector<V> Q = P;
-    left->assign(n, V());
-    right->assign(n, V());
+    left->assign(n, P[0]);
+    right->assign(n, P[0]);
     (*left)[0] = Q[0];
     (*right)[n - 1] = Q[n - 1];
     for (size_t k = 1; k < n; ++k) {

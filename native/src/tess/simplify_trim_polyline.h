@@ -13,7 +13,7 @@ namespace trimkit::tess {
 // original points is replaced by the segment between its ends when, for each
 // point X in it, |X.xyz - segment| <= tolerance and
 // surface_speed · |X.uv - uv segment| <= tolerance; surface_speed bounds
-// |S_u| + |S_v| over the curve's region, so S over the new uv segment stays within
+// sqrt(|S_u|² + |S_v|²) over the curve's region, so S over the new uv segment stays within
 // tolerance of S over the old uv polyline (grid lines add points there). Distances
 // are measured to the original points, so errors do not accumulate.
 void simplify_trim_polyline(TrimPolyline* polyline, double tolerance, double surface_speed);

@@ -20,7 +20,9 @@ void expect_exact_lift(const TrimCase& tc, int min_pieces) {
     const double size = tc.surface.control_box().diagonal().norm();
     double worst = 0.0;
     for (size_t i = 0; i < pieces.size(); ++i) {
-        if (i > 0) EXPECT_EQ(pieces[i].t0, pieces[i - 1].t1);
+        if (i > 0) {
+            EXPECT_EQ(pieces[i].t0, pieces[i - 1].t1);
+        }
         EXPECT_TRUE(pieces[i].exact) << tc.name << " piece " << i;
         for (int k = 0; k <= 97; ++k) {
             const double s = k / 97.0;

@@ -102,7 +102,7 @@ struct Deviation {
 };
 
 inline Deviation polyline_deviation(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
-                                    const tess::TrimPolyline& poly, int samples = 200) {
+                                    const tess::TrimPolyline& poly, int samples = 100) {
     Deviation dev;
     const auto& P = poly.points;
     for (size_t i = 0; i + 1 < P.size(); ++i) {

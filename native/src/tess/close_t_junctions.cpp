@@ -1,0 +1,125 @@
+#include "tess/close_t_junctions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+#include <vector>
+
+#include "mesh/open_edges.h"
+
+namespace trimkit::tess {
+namespace {
+
+// Passes over the open edges; each pass splits every triangle at most once, and a
+// T-junction needs at most one split per triangle side.
+constexpr int kMaxPasses = 4;
+
+struct CellKey {
+    long long x, y, z;
+    bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct CellKeyHash {
+    size_t operator()(const CellKey& k) const {
+        return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+    }
+};
+
+}  // namespace
+
+std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
+    std::size_t inserted = 0;
+    for (int pass = 0; pass < kMaxPasses; ++pass) {
+        const mesh::OpenEdges open = mesh::open_edges(mesh);
+        if (open.boundary.empty()) break;
+        // Boundary vertices in a hash grid with cells about the mean open edge length.
+        std::vector<int> vertices;
+        double mean = 0.0;
+        for (const auto& e : open.boundary) {
+            vertices.push_back(e[0]);
+            vertices.push_back(e[1]);
+            mean += (mesh.positions[e[0]] - mesh.positions[e[1]]).norm();
+        }
+        std::sort(vertices.begin(), vertices.end());
+        vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+        const double cell = std::max(mean / open.boundary.size(), 4.0 * distance) + 1e-300;
+        auto key = [&](const Eigen::Vector3d& p) {
+            return CellKey{static_cast<long long>(std::floor(p.x() / cell)),
+                           static_cast<long long>(std::floor(p.y() / cell)),
+                           static_cast<long long>(std::floor(p.z() / cell))};
+        };
+        std::unordered_map<CellKey, std::vector<int>, CellKeyHash> grid;
+        for (int v : vertices) grid[key(mesh.positions[v])].push_back(v);
+
+        // The triangle using each directed edge.
+        std::map<std::pair<int, int>, int> owner;
+        for (size_t t = 0; t < mesh.triangles.size(); ++t)
+            for (int k = 0; k < 3; ++k)
+                owner[{mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
+
+        std::vector<char> split(mesh.triangles.size(), 0);
+        std::vector<std::array<std::int32_t, 3>> added;
+        std::vector<std::int32_t> added_ids;
+        std::size_t pass_inserted = 0;
+        for (const auto& e : open.boundary) {
+            const auto it = owner.find({e[0], e[1]});
+            if (it == owner.end() || split[it->second]) continue;
+            const Eigen::Vector3d& a = mesh.positions[e[0]];
+            const Eigen::Vector3d& b = mesh.positions[e[1]];
+            const Eigen::Vector3d ab = b - a;
+            const double len2 = ab.squaredNorm();
+            if (!(len2 > 0.0)) continue;
+            const CellKey lo = key(a.cwiseMin(b) - Eigen::Vector3d::Constant(distance));
+            const CellKey hi = key(a.cwiseMax(b) + Eigen::Vector3d::Constant(distance));
+            if ((hi.x - lo.x + 1) * (hi.y - lo.y + 1) * (hi.z - lo.z + 1) > 4096) continue;
+            std::vector<std::pair<double, int>> on_edge;
+            for (long long x = lo.x; x <= hi.x; ++x)
+                for (long long y = lo.y; y <= hi.y; ++y)
+                    for (long long z = lo.z; z <= hi.z; ++z) {
+                        const auto found = grid.find({x, y, z});
+                        if (found == grid.end()) continue;
+                        for (int v : found->second) {
+                            if (v == e[0] || v == e[1]) continue;
+                            const Eigen::Vector3d& p = mesh.positions[v];
+                            const double t = (p - a).dot(ab) / len2;
+                            if (!(t > 0.0 && t < 1.0)) continue;
+                            if ((a + t * ab - p).norm() > distance) continue;
+                            if ((p - a).norm() <= distance || (p - b).norm() <= distance) continue;
+                            on_edge.emplace_back(t, v);
+                        }
+                    }
+            if (on_edge.empty()) continue;
+            std::sort(on_edge.begin(), on_edge.end());
+            const int t = it->second;
+            split[t] = 1;
+            const auto tri = mesh.triangles[t];
+            int k = 0;
+            while (!(tri[k] == e[0] && tri[(k + 1) % 3] == e[1])) ++k;
+            const int c = tri[(k + 2) % 3];
+            int previous = e[0];
+            bool first = true;
+            for (const auto& [param, v] : on_edge) {
+                if (v == c) continue;
+                if (first) {
+                    mesh.triangles[t] = {previous, v, c};
+                    first = false;
+                } else {
+                    added.push_back({previous, v, c});
+                    added_ids.push_back(mesh.face_ids.empty() ? 0 : mesh.face_ids[t]);
+                }
+                previous = v;
+                ++pass_inserted;
+            }
+            if (first) continue;
+            added.push_back({previous, e[1], c});
+            added_ids.push_back(mesh.face_ids.empty() ? 0 : mesh.face_ids[t]);
+        }
+        mesh.triangles.insert(mesh.triangles.end(), added.begin(), added.end());
+        if (!mesh.face_ids.empty()) mesh.face_ids.insert(mesh.face_ids.end(), added_ids.begin(), added_ids.end());
+        inserted += pass_inserted;
+        if (pass_inserted == 0) break;
+    }
+    return inserted;
+}
+
+}  // namespace trimkit::tess

@@ -1,0 +1,19 @@
+// Closing T-junctions between faces: where a boundary vertex of one face lies on
+// an open boundary edge of another (both faces put their grid crossings on the
+// same 3D chord of a shared edge, at different places), the edge's triangle is
+// split at that vertex. Positions do not move, so the geometry is unchanged.
+#pragma once
+
+#include <cstddef>
+
+#include "mesh/mesh.h"
+
+namespace trimkit::tess {
+
+// Splits triangles on open edges at boundary vertices lying on those edges within
+// `distance` (model units, >= 0) and strictly between their ends. Face ids follow
+// the split triangle; flagged edges are left as they are (recompute them). Returns the number of
+// vertices inserted into edges. The mesh must be welded (shared vertices).
+std::size_t close_t_junctions(mesh::Mesh& mesh, double distance);
+
+}  // namespace trimkit::tess

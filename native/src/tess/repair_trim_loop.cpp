@@ -1,0 +1,239 @@
+#include "tess/repair_trim_loop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include <Eigen/Geometry>
+
+namespace trimkit::tess {
+
+namespace {
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() * b.y() - a.y() * b.x();
+}
+
+PolylinePoint lerp(const PolylinePoint& a, const PolylinePoint& b, double s) {
+    PolylinePoint p;
+    p.uv = (1.0 - s) * a.uv + s * b.uv;
+    p.xyz = (1.0 - s) * a.xyz + s * b.xyz;
+    p.t = (1.0 - s) * a.t + s * b.t;
+    return p;
+}
+
+// Consecutive points within snap merged (the earlier kept), closing duplicate removed.
+std::vector<PolylinePoint> merge_close(const std::vector<PolylinePoint>& in, double snap) {
+    std::vector<PolylinePoint> out;
+    for (const PolylinePoint& p : in)
+        if (out.empty() || (p.uv - out.back().uv).norm() > snap) out.push_back(p);
+    while (out.size() > 1 && (out.back().uv - out.front().uv).norm() <= snap) out.pop_back();
+    return out;
+}
+
+double perimeter(const std::vector<PolylinePoint>& P) {
+    double L = 0.0;
+    for (size_t i = 0; i < P.size(); ++i) L += (P[(i + 1) % P.size()].uv - P[i].uv).norm();
+    return L;
+}
+
+// A point to insert into segment `segment` at fraction s.
+struct Insertion {
+    int segment;
+    double s;
+    Eigen::Vector2d uv;
+};
+
+// Cuts of segments i (a->b) and j (c->d) at their common points; adds to `cuts`
+// and returns the number of intersection events. Points within snap of an end are
+// the end itself (no cut on that segment).
+int intersect(const std::vector<PolylinePoint>& P, int i, int j, double snap,
+              std::vector<Insertion>* cuts) {
+    const int n = static_cast<int>(P.size());
+    const Eigen::Vector2d a = P[i].uv, b = P[(i + 1) % n].uv, c = P[j].uv, d = P[(j + 1) % n].uv;
+    const Eigen::Vector2d r = b - a, s = d - c;
+    const double rl = r.norm(), sl = s.norm();
+    if (rl == 0.0 || sl == 0.0) return 0;
+    const bool adjacent = (i + 1) % n == j || (j + 1) % n == i;
+    // Cut segment k (p0 -> p1, length len) at point x, unless x is near an end.
+    auto cut = [&](int k, const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, double len,
+                   const Eigen::Vector2d& x) {
+        const double f = (x - p0).dot(p1 - p0) / (len * len);
+        if ((x - p0).norm() <= snap || (x - p1).norm() <= snap || f <= 0.0 || f >= 1.0) return false;
+        cuts->push_back({k, f, x});
+        return true;
+    };
+    const double denom = cross(r, s);
+    if (std::abs(denom) > 1e-12 * rl * sl) {
+        if (adjacent) return 0;  // they meet at their shared vertex only
+        const double alpha = cross(c - a, s) / denom, beta = cross(c - a, r) / denom;
+        const double ta = snap / rl, tb = snap / sl;
+        if (alpha < -ta || alpha > 1 + ta || beta < -tb || beta > 1 + tb) return 0;
+        Eigen::Vector2d x = a + std::clamp(alpha, 0.0, 1.0) * r;
+        // Snap to a vertex of either segment so both copies coincide exactly.
+        for (const Eigen::Vector2d& v : {a, b, c, d})
+            if ((x - v).norm() <= snap) x = v;
+        const bool on_ab_end = (x - a).norm() <= snap || (x - b).norm() <= snap;
+        const bool on_cd_end = (x - c).norm() <= snap || (x - d).norm() <= snap;
+        // Vertex on vertex: nothing to cut; split_at_repeats separates the loops.
+        if (on_ab_end && on_cd_end) return 0;
+        cut(i, a, b, rl, x);
+        cut(j, c, d, sl, x);
+        return 1;
+    }
+    // Parallel: collinear overlap cuts each segment at the other's ends.
+    if (std::abs(cross(r, c - a)) / rl > snap) return 0;
+    int events = 0;
+    for (const Eigen::Vector2d& x : {c, d}) events += cut(i, a, b, rl, x);
+    for (const Eigen::Vector2d& x : {a, b}) events += cut(j, c, d, sl, x);
+    return events;
+}
+
+// Splits a closed sequence at points it visits twice (within snap).
+std::vector<std::vector<PolylinePoint>> split_at_repeats(const std::vector<PolylinePoint>& Q,
+                                                         double snap) {
+    Eigen::AlignedBox2d box;
+    for (const auto& p : Q) box.extend(p.uv);
+    const double cell = std::max(snap, 1e-12 * (1.0 + box.diagonal().norm() +
+                                                box.min().cwiseAbs().maxCoeff()));
+    std::map<std::pair<long long, long long>, std::vector<int>> grid;  // cell -> stack indices
+    auto key = [&](const Eigen::Vector2d& uv) {
+        return std::make_pair(static_cast<long long>(std::floor(uv.x() / cell)),
+                              static_cast<long long>(std::floor(uv.y() / cell)));
+    };
+    std::vector<PolylinePoint> stack;
+    std::vector<std::vector<PolylinePoint>> loops;
+    for (const PolylinePoint& q : Q) {
+        const auto k = key(q.uv);
+        int found = -1;
+        for (long long dx = -1; dx <= 1 && found < 0; ++dx)
+            for (long long dy = -1; dy <= 1 && found < 0; ++dy) {
+                auto it = grid.find({k.first + dx, k.second + dy});
+                if (it == grid.end()) continue;
+                for (int idx : it->second)
+                    if (idx < static_cast<int>(stack.size()) &&
+                        (stack[idx].uv - q.uv).norm() <= snap) {
+                        found = idx;
+                        break;
+                    }
+            }
+        if (found >= 0) {
+            loops.emplace_back(stack.begin() + found, stack.end());
+            for (size_t r = found + 1; r < stack.size(); ++r) {
+                auto& cellv = grid[key(stack[r].uv)];
+                cellv.erase(std::remove(cellv.begin(), cellv.end(), static_cast<int>(r)), cellv.end());
+            }
+            stack.resize(found + 1);
+            continue;
+        }
+        grid[k].push_back(static_cast<int>(stack.size()));
+        stack.push_back(q);
+    }
+    loops.push_back(std::move(stack));
+    return loops;
+}
+
+}  // namespace
+
+double signed_area(const std::vector<PolylinePoint>& P) {
+    double A = 0.0;
+    for (size_t i = 0; i < P.size(); ++i) A += cross(P[i].uv, P[(i + 1) % P.size()].uv);
+    return 0.5 * A;
+}
+
+TrimPolygon join_trim_loop(const std::vector<TrimPolyline>& coedges, bool outer, double snap_uv,
+                           LoopRepairReport* report) {
+    TrimPolygon polygon;
+    polygon.outer = outer;
+    double max_gap = 0.0;
+    for (const TrimPolyline& c : coedges) {
+        if (c.points.empty()) continue;
+        size_t first = 0;
+        if (!polygon.points.empty()) {
+            const double gap = (c.points.front().uv - polygon.points.back().uv).norm();
+            max_gap = std::max(max_gap, gap);
+            if (gap <= snap_uv) first = 1;
+        }
+        polygon.points.insert(polygon.points.end(), c.points.begin() + first, c.points.end());
+    }
+    if (polygon.points.size() > 1) {
+        const double gap = (polygon.points.back().uv - polygon.points.front().uv).norm();
+        max_gap = std::max(max_gap, gap);
+        if (gap <= snap_uv) polygon.points.pop_back();
+    }
+    if (report) report->max_gap = std::max(report->max_gap, max_gap);
+    return polygon;
+}
+
+std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_uv,
+                                          LoopRepairReport* report, bool face_reversed) {
+    LoopRepairReport local;
+    LoopRepairReport& rep = report ? *report : local;
+    std::vector<PolylinePoint> P = merge_close(loop.points, snap_uv);
+    if (P.size() < 3) {
+        rep.dropped += 1;
+        return {};
+    }
+    const double area = signed_area(P);
+    const bool expected_ccw = loop.outer != face_reversed;  // face.h's convention
+    if ((expected_ccw && area < 0.0) || (!expected_ccw && area > 0.0)) rep.reoriented = true;
+    if ((loop.outer && area < 0.0) || (!loop.outer && area > 0.0)) std::reverse(P.begin(), P.end());
+
+    // Sweep over u: segments sorted by their smallest u; a pair is tested while
+    // the later segment starts before the earlier one ends.
+    const int n = static_cast<int>(P.size());
+    std::vector<int> order(n);
+    std::vector<double> lo(n), hi(n);
+    for (int i = 0; i < n; ++i) {
+        order[i] = i;
+        lo[i] = std::min(P[i].uv.x(), P[(i + 1) % n].uv.x()) - snap_uv;
+        hi[i] = std::max(P[i].uv.x(), P[(i + 1) % n].uv.x()) + snap_uv;
+    }
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return lo[a] < lo[b]; });
+    std::vector<Insertion> cuts;
+    for (int oi = 0; oi < n; ++oi)
+        for (int oj = oi + 1; oj < n && lo[order[oj]] <= hi[order[oi]]; ++oj) {
+            const int i = order[oi], j = order[oj];
+            const double vlo_i = std::min(P[i].uv.y(), P[(i + 1) % n].uv.y()) - snap_uv;
+            const double vhi_i = std::max(P[i].uv.y(), P[(i + 1) % n].uv.y()) + snap_uv;
+            const double vlo_j = std::min(P[j].uv.y(), P[(j + 1) % n].uv.y());
+            const double vhi_j = std::max(P[j].uv.y(), P[(j + 1) % n].uv.y());
+            if (vlo_j > vhi_i || vhi_j < vlo_i) continue;
+            rep.crossings += intersect(P, std::min(i, j), std::max(i, j), snap_uv, &cuts);
+        }
+
+    // Rebuild with the cuts in order along each segment.
+    std::sort(cuts.begin(), cuts.end(), [](const Insertion& a, const Insertion& b) {
+        return a.segment != b.segment ? a.segment < b.segment : a.s < b.s;
+    });
+    std::vector<PolylinePoint> Q;
+    Q.reserve(P.size() + cuts.size());
+    size_t c = 0;
+    for (int i = 0; i < n; ++i) {
+        Q.push_back(P[i]);
+        for (; c < cuts.size() && cuts[c].segment == i; ++c) {
+            PolylinePoint x = lerp(P[i], P[(i + 1) % n], cuts[c].s);
+            x.uv = cuts[c].uv;
+            Q.push_back(x);
+        }
+    }
+    Q = merge_close(Q, snap_uv);
+
+    std::vector<TrimPolygon> out;
+    for (std::vector<PolylinePoint>& piece : split_at_repeats(Q, snap_uv)) {
+        piece = merge_close(piece, snap_uv);
+        const double a = piece.size() >= 3 ? signed_area(piece) : 0.0;
+        if (piece.size() < 3 || std::abs(a) <= 0.5 * snap_uv * perimeter(piece)) {
+            rep.dropped += 1;
+            continue;
+        }
+        if ((loop.outer && a < 0.0) || (!loop.outer && a > 0.0))
+            std::reverse(piece.begin(), piece.end());
+        out.push_back({std::move(piece), loop.outer});
+    }
+    rep.split_loops += std::max(0, static_cast<int>(out.size()) - 1);
+    return out;
+}
+
+}  // namespace trimkit::tess

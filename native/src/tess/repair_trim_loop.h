@@ -1,0 +1,53 @@
+// Turning a face's trim loop into valid polygons for trimming: the coedges'
+// polylines joined into one closed polygon (duplicate joints removed, tiny gaps
+// snapped), then self-intersections repaired by inserting the crossing points and
+// splitting into simple loops ([Balazs] Sec. 5.1, last paragraph), zero-area
+// slivers dropped, and each loop oriented in (u,v): outer loops counter-clockwise,
+// holes clockwise, whatever Face::reversed says (it only flips the normal).
+#pragma once
+
+#include <vector>
+
+#include "tess/trim_polyline.h"
+
+namespace trimkit::tess {
+
+// What the repair changed, for the face's warnings.
+struct LoopRepairReport {
+    bool reoriented = false;  // the loop ran against face.h's convention for its role
+    int crossings = 0;        // self-intersections (crossing or touching points) found
+    int split_loops = 0;      // extra simple loops the crossings created
+    int dropped = 0;          // slivers (area below snap width x perimeter) dropped
+    double max_gap = 0.0;     // largest (u,v) gap between consecutive coedges
+    bool changed() const { return reoriented || crossings > 0 || dropped > 0; }
+};
+
+// The coedges' polylines (in loop order, each in its traversal direction) joined
+// into one closed polygon: a coedge's first point is dropped when it lies within
+// snap_uv of the previous coedge's last one (the earlier point is kept, so a
+// shared edge's vertex stays); larger gaps are bridged by the closing segment
+// between them and reported in max_gap; the last point is dropped if it closes
+// onto the first. Orientation is not changed here.
+TrimPolygon join_trim_loop(const std::vector<TrimPolyline>& coedges, bool outer, double snap_uv,
+                           LoopRepairReport* report = nullptr);
+
+// Simple polygons covering the loop: consecutive points within snap_uv merged;
+// the loop reversed if its signed area disagrees with loop.outer; every
+// crossing, touching or overlapping pair of segments cut at the shared point;
+// the polygon split at points it visits twice; slivers (area <= snap_uv ·
+// perimeter / 2, fewer than 3 points) dropped; each piece oriented for its role
+// (a figure-eight outer loop gives two counter-clockwise loops). Segment pairs
+// are found by a sweep over u (sorted by min u), so near-linear for typical loops.
+// face_reversed: face.h (and the readers) mirror the loops of a reversed face
+// (outer clockwise); such input is expected, so `reoriented` is only recorded
+// when the loop disagrees with that convention. The output is always outer
+// counter-clockwise, holes clockwise.
+std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_uv,
+                                          LoopRepairReport* report = nullptr,
+                                          bool face_reversed = false);
+
+// Signed area in (u,v) of the polygon closed from back() to front()
+// (positive: counter-clockwise).
+double signed_area(const std::vector<PolylinePoint>& points);
+
+}  // namespace trimkit::tess
