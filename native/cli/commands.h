@@ -11,4 +11,8 @@ namespace trimkit::cli {
 // trimkit info MODEL [--json]
 int run_info(const std::vector<std::string>& args);
 
+// trimkit mesh MODEL -o OUT --tolerance T [--relative] [--angle A] [--mode M]
+//   [--trim-method M] [--threads N] [--json]
+int run_mesh(const std::vector<std::string>& args);
+
 }  // namespace trimkit::cli

@@ -17,7 +17,10 @@ namespace {
 const char* const kUsage =
     "usage: trimkit COMMAND [ARGS]\n"
     "commands:\n"
-    "  info MODEL [--json]    summary of an IGES model: units, faces, surfaces, loops, edges\n";
+    "  info MODEL [--json]    summary of an IGES model: units, faces, surfaces, loops, edges\n"
+    "  mesh MODEL -o OUT --tolerance T [--relative] [--angle DEG] [--mode guaranteed|approximate]\n"
+    "       [--trim-method bezier3d|yang|param] [--threads N] [--json]\n"
+    "                         tessellate to .obj .ply .stl .glb within T (model units)\n";
 
 int fail(int status, const std::string& message) {
     std::cerr << "trimkit: " << message << "\n";
@@ -30,6 +33,7 @@ int main(int argc, char** argv) {
     using Command = std::function<int(const std::vector<std::string>&)>;
     const std::map<std::string, Command> commands = {
         {"info", trimkit::cli::run_info},
+        {"mesh", trimkit::cli::run_mesh},
     };
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cout << kUsage;

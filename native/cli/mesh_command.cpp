@@ -1,0 +1,108 @@
+// trimkit mesh MODEL -o OUT --tolerance T [--relative] [--angle A]
+//   [--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N] [--json]
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "arguments.h"
+#include "commands.h"
+#include "io/json_writer.h"
+#include "io/read_model.h"
+#include "io/write_mesh.h"
+#include "tess/tessellate_model.h"
+
+namespace trimkit::cli {
+namespace {
+
+const char* const kMeshUsage =
+    "trimkit mesh MODEL -o OUT --tolerance T [--relative] [--angle DEGREES] "
+    "[--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N] [--json]";
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+int run_mesh(const std::vector<std::string>& argv) {
+    const Arguments args(argv, {"--json", "--relative"},
+                         {"-o", "--output", "--tolerance", "--angle", "--mode", "--trim-method", "--threads"});
+    args.expect_positionals(1, kMeshUsage);
+    const std::string& path = args.positionals()[0];
+    const std::string out = args.has("-o") ? args.value("-o", "") : args.value("--output", "");
+    if (out.empty()) throw UsageError(std::string("missing -o OUT; usage: ") + kMeshUsage);
+    if (!args.has("--tolerance")) throw UsageError(std::string("missing --tolerance; usage: ") + kMeshUsage);
+
+    tess::TessellationOptions options;
+    const double tolerance = args.number("--tolerance", 0.0);
+    if (!(tolerance > 0.0)) throw UsageError("--tolerance must be > 0");
+    options.angle = args.number("--angle", 30.0) * M_PI / 180.0;
+    const std::string mode = args.value("--mode", "guaranteed");
+    if (mode == "guaranteed")
+        options.mode = tess::ErrorMode::kGuaranteed;
+    else if (mode == "approximate")
+        options.mode = tess::ErrorMode::kApproximate;
+    else
+        throw UsageError("--mode '" + mode + "'; expected guaranteed or approximate");
+    const std::string method = args.value("--trim-method", "bezier3d");
+    if (method == "bezier3d")
+        options.trim_method = tess::TrimMethod::kBezier3d;
+    else if (method == "yang")
+        options.trim_method = tess::TrimMethod::kYang;
+    else if (method == "param")
+        options.trim_method = tess::TrimMethod::kParam;
+    else
+        throw UsageError("--trim-method '" + method + "'; expected bezier3d, yang or param");
+    const double threads = args.number("--threads", 0.0);
+    if (threads < 0 || threads != std::floor(threads)) throw UsageError("--threads must be an integer >= 0");
+    options.threads = static_cast<int>(threads);
+
+    const auto start_all = Clock::now();
+    auto start = Clock::now();
+    const geom::Model model = io::read_model(path);
+    const double read_seconds = seconds_since(start);
+    options.tolerance = tolerance;
+    if (args.flag("--relative")) {
+        const double diagonal = tess::model_diagonal(model);
+        if (!(diagonal > 0.0)) throw UsageError(path + ": --relative needs a model with faces");
+        options.tolerance = tolerance * diagonal;
+    }
+    const tess::TessellationResult result = tess::tessellate_model(model, options);
+    start = Clock::now();
+    io::write_mesh(out, result.mesh);
+    const double write_seconds = seconds_since(start);
+    const double total = seconds_since(start_all);
+
+    if (args.flag("--json")) {
+        using io::json_number;
+        using io::json_string;
+        std::ostringstream json;
+        json << "{\"faces\": " << result.faces << ", \"faces_meshed\": " << result.faces_meshed
+             << ", \"failed_faces\": [";
+        for (size_t k = 0; k < result.failed_faces.size(); ++k)
+            json << (k ? ", " : "") << "{\"face\": " << result.failed_faces[k].face
+                 << ", \"reason\": " << json_string(result.failed_faces[k].reason) << "}";
+        json << "], \"triangles\": " << result.mesh.triangle_count()
+             << ", \"vertices\": " << result.mesh.vertex_count() << ", \"open_edges\": " << result.open_edges
+             << ", \"tolerance\": " << json_number(result.tolerance) << ", \"warnings\": " << result.warnings.size()
+             << ", \"seconds\": {\"read\": " << json_number(read_seconds)
+             << ", \"trim\": " << json_number(result.seconds.trim)
+             << ", \"surface\": " << json_number(result.seconds.surface)
+             << ", \"triangulate\": " << json_number(result.seconds.triangulate)
+             << ", \"weld\": " << json_number(result.seconds.weld) << ", \"write\": " << json_number(write_seconds)
+             << ", \"total\": " << json_number(total) << "}}";
+        std::cout << json.str() << "\n";
+    } else {
+        std::cout << out << ": " << result.mesh.triangle_count() << " triangles, " << result.mesh.vertex_count()
+                  << " vertices, " << result.faces_meshed << "/" << result.faces << " faces meshed, "
+                  << result.open_edges << " open edges, tolerance " << result.tolerance << ", "
+                  << total << " s\n";
+        for (const auto& failed : result.failed_faces) std::cout << "  failed: " << failed.reason << "\n";
+    }
+    return 0;
+}
+
+}  // namespace trimkit::cli

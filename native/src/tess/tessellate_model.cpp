@@ -1,0 +1,299 @@
+#include "tess/tessellate_model.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <thread>
+
+#include "geom/error.h"
+#include "mesh/open_edges.h"
+#include "mesh/weld_vertices.h"
+#include "tess/approximate_trim_curve.h"
+#include "tess/close_t_junctions.h"
+#include "tess/repair_trim_loop.h"
+#include "tess/share_edge_points.h"
+#include "tess/tessellate_face.h"
+
+namespace trimkit::tess {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Trim points closer than this fraction of the face's (u,v) domain diagonal are
+// one point when joining and repairing loops (far above double rounding of the
+// parameters, far below any trim segment the approximation makes).
+constexpr double kSnapUvRelative = 1e-9;
+// Models with shared edges meet exactly along edges; only the vertices where edges
+// end can differ (by the file's gap), so their boundary weld uses this share of the
+// tolerance. Models without (loose trimmed surfaces) weld within the tolerance.
+constexpr double kSharedEdgeWeldShare = 0.1;
+// Samples per trim curve and per side of the (u,v) grid for model_diagonal.
+constexpr int kDiagonalCurveSamples = 16, kDiagonalGridSamples = 12;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+template <class F>
+void parallel_for(int count, int threads, F&& body) {
+    std::atomic<int> next{0};
+    auto worker = [&] {
+        for (int i = next++; i < count; i = next++) body(i);
+    };
+    const int helpers = std::min(threads, count) - 1;
+    std::vector<std::thread> pool;
+    for (int t = 0; t < helpers; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& thread : pool) thread.join();
+}
+
+double uv_diagonal(const geom::NurbsSurface& S) {
+    const auto [u0, u1] = S.domain_u();
+    const auto [v0, v1] = S.domain_v();
+    return std::hypot(u1 - u0, v1 - v0);
+}
+
+struct CoedgeRef {
+    int face = -1, loop = -1, coedge = -1;
+};
+
+struct FaceOutput {
+    mesh::Mesh mesh;
+    std::string error;
+    std::vector<std::string> warnings;
+    FaceTimings timings;
+    double trim_seconds = 0.0;
+};
+
+// Flags face-boundary edges (open, or between different faces) and sharp ones
+// (triangle normals differing by more than `angle`).
+void flag_edges(mesh::Mesh& mesh, double angle) {
+    std::map<std::pair<int, int>, std::vector<int>> uses;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+            if (a != b) uses[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(t));
+        }
+    auto normal = [&](int t) {
+        const auto& tri = mesh.triangles[t];
+        return Eigen::Vector3d((mesh.positions[tri[1]] - mesh.positions[tri[0]])
+                                   .cross(mesh.positions[tri[2]] - mesh.positions[tri[0]]));
+    };
+    const double cos_angle = std::cos(angle);
+    mesh.edges.clear();
+    for (const auto& [edge, tris] : uses) {
+        std::uint8_t flags = 0;
+        if (tris.size() != 2) {
+            flags |= mesh::kFaceBoundary;
+        } else if (mesh.face_ids[tris[0]] != mesh.face_ids[tris[1]]) {
+            flags |= mesh::kFaceBoundary;
+            const Eigen::Vector3d n0 = normal(tris[0]), n1 = normal(tris[1]);
+            const double len = n0.norm() * n1.norm();
+            if (len > 0.0 && n0.dot(n1) < cos_angle * len) flags |= mesh::kSharp;
+        }
+        if (flags) mesh.edges.push_back({edge.first, edge.second, flags});
+    }
+}
+
+}  // namespace
+
+TessellationResult tessellate_model(const geom::Model& model, const TessellationOptions& options) {
+    validate(options);
+    const auto start_all = Clock::now();
+    TessellationResult result;
+    result.faces = static_cast<int>(model.faces.size());
+    result.tolerance = options.tolerance;
+    const int threads = options.threads > 0
+                            ? options.threads
+                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const double trim_tol = trim_tolerance(options);
+
+    // Phase 1: each shared edge approximated once, on the first face (in face order)
+    // that uses it.
+    auto start = Clock::now();
+    std::vector<CoedgeRef> first(model.edges.size());
+    std::vector<int> shared;
+    for (size_t f = 0; f < model.faces.size(); ++f)
+        for (size_t l = 0; l < model.faces[f].loops.size(); ++l)
+            for (size_t c = 0; c < model.faces[f].loops[l].coedges.size(); ++c) {
+                const int e = model.faces[f].loops[l].coedges[c].edge;
+                if (e < 0 || e >= static_cast<int>(model.edges.size()) || first[e].face >= 0) continue;
+                first[e] = {static_cast<int>(f), static_cast<int>(l), static_cast<int>(c)};
+                shared.push_back(e);
+            }
+    std::vector<std::optional<TrimPolyline>> edge_polyline(model.edges.size());
+    std::vector<std::vector<Eigen::Vector3d>> edge_points(model.edges.size());
+    parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
+        const int e = shared[k];
+        const geom::Face& face = model.faces[first[e].face];
+        const geom::Coedge& coedge = face.loops[first[e].loop].coedges[first[e].coedge];
+        try {
+            TrimPolyline polyline = approximate_trim_curve(face.surface, coedge.curve, trim_tol,
+                                                           options.trim_method);
+            polyline.edge = e;
+            edge_points[e] = edge_points_from(polyline, coedge.edge_reversed);
+            edge_polyline[e] = std::move(polyline);
+        } catch (const std::exception&) {
+            // The faces using the edge approximate it themselves (and report failures).
+        }
+    });
+    const double edge_seconds = seconds_since(start);
+
+    // Phase 2: faces.
+    start = Clock::now();
+    std::vector<FaceOutput> outputs(model.faces.size());
+    parallel_for(static_cast<int>(model.faces.size()), threads, [&](int f) {
+        const geom::Face& face = model.faces[f];
+        FaceOutput& out = outputs[f];
+        try {
+            const auto trim_start = Clock::now();
+            const double snap_uv = kSnapUvRelative * uv_diagonal(face.surface);
+            std::vector<TrimPolygon> polygons;
+            for (size_t l = 0; l < face.loops.size(); ++l) {
+                const geom::Loop& loop = face.loops[l];
+                std::vector<TrimPolyline> polylines;
+                for (size_t c = 0; c < loop.coedges.size(); ++c) {
+                    const geom::Coedge& coedge = loop.coedges[c];
+                    const int e = coedge.edge;
+                    const bool has_edge = e >= 0 && e < static_cast<int>(model.edges.size()) &&
+                                          edge_polyline[e].has_value();
+                    if (has_edge && first[e].face == f && first[e].loop == static_cast<int>(l) &&
+                        first[e].coedge == static_cast<int>(c)) {
+                        polylines.push_back(*edge_polyline[e]);
+                    } else if (has_edge) {
+                        SharedEdgePolyline mapped = share_edge_points(face.surface, coedge, edge_points[e]);
+                        if (mapped.max_gap > options.tolerance)
+                            out.warnings.push_back("face " + std::to_string(f) + ": edge " + std::to_string(e) +
+                                                   " lies " + geom::format_value(mapped.max_gap) +
+                                                   " from the surface (more than the tolerance)");
+                        polylines.push_back(std::move(mapped.polyline));
+                    } else {
+                        polylines.push_back(approximate_trim_curve(face.surface, coedge.curve, trim_tol,
+                                                                   options.trim_method));
+                        polylines.back().edge = e;
+                    }
+                }
+                LoopRepairReport report;
+                const TrimPolygon joined = join_trim_loop(polylines, loop.outer, snap_uv, &report);
+                for (TrimPolygon& p : repair_trim_loop(joined, snap_uv, &report)) polygons.push_back(std::move(p));
+                if (report.changed())
+                    out.warnings.push_back("face " + std::to_string(f) + ": trim loop " + std::to_string(l) +
+                                           " repaired (" + std::to_string(report.crossings) + " crossings, " +
+                                           std::to_string(report.dropped) + " slivers dropped" +
+                                           (report.reoriented ? ", reoriented" : "") + ")");
+            }
+            out.trim_seconds = seconds_since(trim_start);
+            out.mesh = tessellate_face(face, polygons, options, f, &out.timings);
+        } catch (const geom::NumericalFailure& e) {
+            out.error = e.what();
+        } catch (const geom::InvalidInput& e) {
+            out.error = e.what();
+        } catch (const std::bad_alloc&) {
+            out.error = "face " + std::to_string(f) + ": out of memory";
+        } catch (const std::exception& e) {
+            out.error = "face " + std::to_string(f) + ": internal error: " + e.what();
+        }
+    });
+    const double face_wall = seconds_since(start);
+
+    // Gather in face order.
+    double trim_sum = 0.0, surface_sum = 0.0, triangulate_sum = 0.0;
+    for (size_t f = 0; f < outputs.size(); ++f) {
+        FaceOutput& out = outputs[f];
+        trim_sum += out.trim_seconds + out.timings.trim;
+        surface_sum += out.timings.surface;
+        triangulate_sum += out.timings.triangulate;
+        result.warnings.insert(result.warnings.end(), out.warnings.begin(), out.warnings.end());
+        if (!out.error.empty()) {
+            result.failed_faces.push_back({static_cast<int>(f), out.error});
+            continue;
+        }
+        if (out.mesh.triangle_count() == 0) continue;
+        ++result.faces_meshed;
+        mesh::append(result.mesh, out.mesh);
+        out.mesh = mesh::Mesh();
+    }
+    const double sum = trim_sum + surface_sum + triangulate_sum;
+    if (sum > 0.0) {
+        result.seconds.trim = edge_seconds + face_wall * trim_sum / sum;
+        result.seconds.surface = face_wall * surface_sum / sum;
+        result.seconds.triangulate = face_wall * triangulate_sum / sum;
+    } else {
+        result.seconds.trim = edge_seconds + face_wall;
+    }
+
+    // Weld: boundary vertices within the weld tolerance onto common positions, then
+    // coincident vertices; close T-junctions between faces; flag edges.
+    start = Clock::now();
+    mesh::Mesh& m = result.mesh;
+    if (m.vertex_count() > 0) {
+        const double weld_tol = (shared.empty() ? 1.0 : kSharedEdgeWeldShare) * options.tolerance;
+        std::vector<int> boundary;
+        for (const auto& e : m.edges)
+            if (e.flags & mesh::kFaceBoundary) boundary.push_back(e.v0), boundary.push_back(e.v1);
+        std::sort(boundary.begin(), boundary.end());
+        boundary.erase(std::unique(boundary.begin(), boundary.end()), boundary.end());
+        mesh::Mesh points;
+        for (int v : boundary) points.positions.push_back(m.positions[v]);
+        mesh::WeldOptions boundary_weld;
+        boundary_weld.tolerance = weld_tol;
+        const mesh::WeldResult clusters = mesh::weld_vertices(points, boundary_weld);
+        for (size_t k = 0; k < boundary.size(); ++k)
+            m.positions[boundary[k]] = points.positions[clusters.vertex_map[k]];
+        mesh::WeldOptions exact;
+        exact.tolerance = 0.0;
+        mesh::weld_vertices(m, exact);
+        close_t_junctions(m, weld_tol);
+        flag_edges(m, options.angle);
+        result.open_edges = mesh::count_open_edges(m);
+    }
+    result.seconds.weld = seconds_since(start);
+    (void)start_all;
+    return result;
+}
+
+double model_diagonal(const geom::Model& model) {
+    Eigen::AlignedBox3d box;
+    for (const geom::Face& face : model.faces) {
+        const geom::NurbsSurface& S = face.surface;
+        std::vector<std::vector<Eigen::Vector2d>> polygons;
+        Eigen::AlignedBox2d uv_box;
+        for (const geom::Loop& loop : face.loops) {
+            std::vector<Eigen::Vector2d> polygon;
+            for (const geom::Coedge& coedge : loop.coedges) {
+                const auto [t0, t1] = coedge.curve.domain();
+                for (int k = 0; k < kDiagonalCurveSamples; ++k) {
+                    const Eigen::Vector2d uv = coedge.curve.evaluate(t0 + (t1 - t0) * k / kDiagonalCurveSamples);
+                    if (!uv.allFinite()) continue;
+                    polygon.push_back(uv);
+                    uv_box.extend(uv);
+                    const Eigen::Vector3d p = S.evaluate(uv.x(), uv.y());
+                    if (p.allFinite()) box.extend(p);
+                }
+            }
+            polygons.push_back(std::move(polygon));
+        }
+        if (uv_box.isEmpty()) continue;
+        for (int i = 0; i <= kDiagonalGridSamples; ++i)
+            for (int j = 0; j <= kDiagonalGridSamples; ++j) {
+                const Eigen::Vector2d uv =
+                    uv_box.min() + uv_box.sizes().cwiseProduct(Eigen::Vector2d(i, j) / kDiagonalGridSamples);
+                bool in = false;
+                for (const auto& poly : polygons)
+                    for (size_t a = 0, n = poly.size(), b = n - 1; a < n; b = a++)
+                        if ((poly[a].y() > uv.y()) != (poly[b].y() > uv.y()) &&
+                            uv.x() < poly[a].x() + (uv.y() - poly[a].y()) * (poly[b].x() - poly[a].x()) /
+                                                       (poly[b].y() - poly[a].y()))
+                            in = !in;
+                if (!in) continue;
+                const Eigen::Vector3d p = S.evaluate(uv.x(), uv.y());
+                if (p.allFinite()) box.extend(p);
+            }
+    }
+    return box.isEmpty() ? 0.0 : box.diagonal().norm();
+}
+
+}  // namespace trimkit::tess
