@@ -1,0 +1,23 @@
+// Foot point: the (u,v) of the surface point closest to x, found by Newton's
+// method on f(u,v) = |S(u,v) - x|² from a nearby start, [PT] Sec. 6.1 (eq. 6.5-6.7),
+// clamped to the domain. Local: it finds the foot point in the basin of `start`
+// (the caller supplies a good start, e.g. the interpolated (u,v) of a mesh point).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "geom/nurbs_surface.h"
+
+namespace trimkit::tess {
+
+// Newton stops when a step moves S by less than this fraction of the surface's
+// size |Su|·Δu_domain + |Sv|·Δv_domain (1e-13: near double precision).
+constexpr double kFootPointStep = 1e-13;
+constexpr int kFootPointIterations = 12;
+
+// The (u,v) found, never farther from x than `start` is (the best iterate is
+// kept). Throws geom::NumericalFailure only if S cannot be evaluated at start.
+Eigen::Vector2d foot_point(const geom::NurbsSurface& surface, const Eigen::Vector3d& x,
+                           const Eigen::Vector2d& start);
+
+}  // namespace trimkit::tess
