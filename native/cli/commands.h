@@ -15,4 +15,7 @@ int run_info(const std::vector<std::string>& args);
 //   [--trim-method M] [--threads N] [--json]
 int run_mesh(const std::vector<std::string>& args);
 
+// trimkit check MODEL MESH [--json] [--samples N] [--threads N]
+int run_check(const std::vector<std::string>& args);
+
 }  // namespace trimkit::cli

@@ -20,7 +20,9 @@ const char* const kUsage =
     "  info MODEL [--json]    summary of an IGES model: units, faces, surfaces, loops, edges\n"
     "  mesh MODEL -o OUT --tolerance T [--relative] [--angle DEG] [--mode guaranteed|approximate]\n"
     "       [--trim-method bezier3d|yang|param] [--threads N] [--json]\n"
-    "                         tessellate to .obj .ply .stl .glb within T (model units)\n";
+    "                         tessellate to .obj .ply .stl .glb within T (model units)\n"
+    "  check MODEL MESH [--json] [--samples N] [--threads N]\n"
+    "                         two-sided deviation of MESH from MODEL's faces, area ratio, open edges\n";
 
 int fail(int status, const std::string& message) {
     std::cerr << "trimkit: " << message << "\n";
@@ -34,6 +36,7 @@ int main(int argc, char** argv) {
     const std::map<std::string, Command> commands = {
         {"info", trimkit::cli::run_info},
         {"mesh", trimkit::cli::run_mesh},
+        {"check", trimkit::cli::run_check},
     };
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cout << kUsage;

@@ -29,20 +29,33 @@ std::vector<Eigen::Vector3d> homogeneous_piece(const geom::NurbsCurve2d& c, doub
     return h;
 }
 
-// [Balazs] Sec. 5.1: the largest distance of the projected control points from the
-// chord P0 Pn (the convex hull bound; infinite if a weight is not positive).
+// [Balazs] Sec. 5.1: the distance of the curve from the chord P0 Pn, bounded by the
+// largest distance d of the projected inner control points from the chord times
+// sup_s of the inner rational basis sum (re-derived, replacing the paper's factor
+// 1 - 2^(2-n)): C(s) = sum r_i P_i, and sum r_i x_i (x_i the chord point nearest
+// P_i, x_0 = P0, x_n = Pn) lies on the chord, so dist <= d sup_s sum_{0<i<n} r_i(s).
+// With A = sum_{0<i<n} w_i B_i <= w_in (1 - B_0 - B_n), E = w_0 B_0 + w_n B_n >=
+// w_end (B_0 + B_n) and B_0 + B_n >= beta = 2^(1-n) (its minimum, at s = 1/2):
+// A / (A + E) <= q (1 - beta) / (q (1 - beta) + beta), q = w_in / w_end. For a
+// polynomial quadratic this is 1/2, the exact sagitta factor; a small circular arc
+// gets w / (1 + w) ~ 1/2 too. Infinite if a weight is not positive.
 double line_bound(const std::vector<Eigen::Vector4d>& P) {
     for (const auto& h : P)
         if (!(h.w() > 0.0)) return kInfinity;
     const Eigen::Vector3d a = project(P.front()), b = project(P.back()), ab = b - a;
     const double len2 = ab.squaredNorm();
-    double e = 0.0;
+    double e = 0.0, w_in = 0.0;
     for (size_t i = 1; i + 1 < P.size(); ++i) {
         const Eigen::Vector3d x = project(P[i]);
         const double lambda = len2 > 0.0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
         e = std::max(e, (x - a - lambda * ab).norm());
+        w_in = std::max(w_in, P[i].w());
     }
-    return e;
+    if (e == 0.0) return 0.0;
+    const int n = static_cast<int>(P.size()) - 1;
+    const double beta = std::ldexp(1.0, 1 - n);
+    const double q = w_in / std::min(P.front().w(), P.back().w());
+    return e * q * (1.0 - beta) / (q * (1.0 - beta) + beta);
 }
 
 // Bound on max_s |c(s) - l(s)|, l(s) = b0 + s (bn - b0) the chord at the same s.

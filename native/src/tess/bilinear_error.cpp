@@ -4,24 +4,59 @@
 #include <cmath>
 #include <limits>
 
+#include "tess/second_derivative_bound.h"
+
 namespace trimkit::tess {
 namespace {
 
 // Splits closer than this to a patch side make slivers without reducing the error.
 constexpr double kMinSplit = 0.1;
+// Weights equal to this relative spread make a patch polynomial (control net bound).
+constexpr double kPolynomialWeightSpread = 1e-14;
+// Plans for more pieces than this are not trusted (the bound of a large patch
+// overestimates, so a planned cut would land off the final grid): halve instead.
+constexpr double kMaxPlannedPieces = 8.0;
+
+bool is_rational(const BezierPatch& patch) {
+    double w_min = patch.Pw[0][3], w_max = w_min;
+    for (const Eigen::Vector4d& P : patch.Pw) w_min = std::min(w_min, P[3]), w_max = std::max(w_max, P[3]);
+    return w_max - w_min > kPolynomialWeightSpread * std::abs(w_max);
+}
+
+// Rational patch, kGuaranteed: second_derivative_bound and its split.
+BilinearError rational_error(const BezierPatch& patch, double tolerance) {
+    const SecondDerivativeBound M = second_derivative_bound(patch);
+    BilinearError result;
+    result.bound = M.error();
+    if (!std::isfinite(result.bound)) {
+        result.bound = std::numeric_limits<double>::infinity();
+        return result;
+    }
+    // Halving s divides the M_uu term by 4 and the M_uv term by 2: cut across the
+    // larger of M_uu, M_vv (ties: the longer side in 3D, by the control polygon).
+    result.split_in_u = M.M_uu > M.M_vv ||
+                        (M.M_uu == M.M_vv && (patch.euclidean(patch.p, 0) - patch.euclidean(0, 0)).norm() >=
+                                                 (patch.euclidean(0, patch.q) - patch.euclidean(0, 0)).norm());
+    result.split = 0.5;
+    const double own = (result.split_in_u ? M.M_uu : M.M_vv) / 8.0;
+    const double rest = result.bound - own;
+    if (tolerance > rest && own > 0.0) {
+        // k pieces across: own / k^2 + rest <= tolerance.
+        const double k = std::ceil(std::sqrt(own / (tolerance - rest)));
+        if (k >= 3.0 && k <= kMaxPlannedPieces) result.split = std::floor(k / 2.0) / k;
+    }
+    return result;
+}
 
 }  // namespace
 
-BilinearError bilinear_error(const BezierPatch& patch, ErrorMode mode) {
+BilinearError bilinear_error(const BezierPatch& patch, ErrorMode mode, double tolerance) {
+    if (mode == ErrorMode::kGuaranteed && is_rational(patch)) return rational_error(patch, tolerance);
     const int m = patch.p, n = patch.q;
     Eigen::Vector3d P[(geom::kMaxDegree + 1) * (geom::kMaxDegree + 1)];
     auto at = [&](int i, int j) -> Eigen::Vector3d& { return P[i * (n + 1) + j]; };
-    double w_min = patch.point(0, 0)[3], w_max = w_min;
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j) {
-            const double w = patch.point(i, j)[3];
-            w_min = std::min(w_min, w);
-            w_max = std::max(w_max, w);
             at(i, j) = mode == ErrorMode::kApproximate
                            ? patch.evaluate(static_cast<double>(i) / m, static_cast<double>(j) / n)
                            : patch.euclidean(i, j);
@@ -55,10 +90,7 @@ BilinearError bilinear_error(const BezierPatch& patch, ErrorMode mode) {
         for (int a = 0; a < count; ++a)
             for (int b = a + 1; b < count; ++b) diam = std::max(diam, (D[a] - D[b]).squaredNorm());
         diam = std::sqrt(diam);
-        const double rho = w_max / w_min - 1.0;
-        const double R = rho * ((e_u.norm() + d.norm()) / (2.0 * std::sqrt(double(m))) +
-                                (e_v.norm() + d.norm()) / (2.0 * std::sqrt(double(n))));
-        result.bound = diam + twist + 2.0 * R;
+        result.bound = diam + twist;
     }
     if (!std::isfinite(result.bound)) result.bound = std::numeric_limits<double>::infinity();
 

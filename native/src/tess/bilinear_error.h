@@ -18,16 +18,18 @@ struct BilinearError {
 // [Balazs] Sec. 5.2: e <= e_bilin + 1/4 |P00 - Pm0 - P0n + Pmn| with
 // e_bilin = max_ij |P_ij - S~(i/m, j/n)|, S~ the bilinear interpolant of the corners
 // (re-derived: S~(a,b) = (1-a)(1-b) P00 + a(1-b) Pm0 + (1-a) b P0n + a b Pmn, a along u).
-// kGuaranteed departs in two places, so the bound holds for every triangulation of
+// kGuaranteed departs from the paper, so the bound holds for every triangulation of
 // points of the rectangle that lie on S, not only for the two corner triangles:
 //  - e_bilin is replaced by diam{P_ij - S~(i/m,j/n)} (contains 0): S - S~ is a convex
 //    combination of these differences, at the triangle vertices and inside alike;
 //    the 1/4 |twist| term bounds the linear interpolation of a b on any triangle
 //    inside the square (|Cov(a,b)| <= 1/4);
-//  - rational patches add 2R, R = rho ((|e_u| + |d|) / (2 sqrt m) + (|e_v| + |d|) /
-//    (2 sqrt n)), rho = w_max / w_min - 1, bounding sum_ij r_ij S~(i/m,j/n) - S~(u,v)
-//    for the rational basis r_ij (derived here, not in the paper).
+//  - rational patches (weights not all equal) use second_derivative_bound instead
+//    (the control net bound above does not hold for them); their split goes across
+//    the direction with the larger second derivative, at a multiple of 1/k where k
+//    pieces are predicted to meet `tolerance` (the bound falls as 1/k^2), so a
+//    uniformly curved patch ends in about as many strips as it needs.
 // kApproximate: the paper's approximate measure, P_ij replaced by S(i/m, j/n).
-BilinearError bilinear_error(const BezierPatch& patch, ErrorMode mode);
+BilinearError bilinear_error(const BezierPatch& patch, ErrorMode mode, double tolerance);
 
 }  // namespace trimkit::tess

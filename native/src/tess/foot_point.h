@@ -13,10 +13,12 @@ namespace trimkit::tess {
 // Newton stops when a step moves S by less than this fraction of the surface's
 // size |Su|·Δu_domain + |Sv|·Δv_domain (1e-13: near double precision).
 constexpr double kFootPointStep = 1e-13;
-constexpr int kFootPointIterations = 12;
+constexpr int kFootPointIterations = 16;
+// Step halvings tried before a Newton step that does not lower |S - x| is given up.
+constexpr int kFootPointHalvings = 12;
 
-// The (u,v) found, never farther from x than `start` is (the best iterate is
-// kept). Throws geom::NumericalFailure only if S cannot be evaluated at start.
+// The (u,v) found, never farther from x than `start` (clamped to the domain) is:
+// each accepted step lowers the distance. Throws geom::NumericalFailure only if S cannot be evaluated at start.
 Eigen::Vector2d foot_point(const geom::NurbsSurface& surface, const Eigen::Vector3d& x,
                            const Eigen::Vector2d& start);
 

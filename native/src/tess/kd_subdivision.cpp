@@ -24,7 +24,7 @@ void subdivide(const BezierPatch& patch, double tolerance, ErrorMode mode, doubl
     while (!stack.empty()) {
         BezierPatch current = std::move(stack.back());
         stack.pop_back();
-        const BilinearError error = bilinear_error(current, mode);
+        const BilinearError error = bilinear_error(current, mode, tolerance);
         if (!std::isfinite(error.bound))
             throw geom::NumericalFailure(
                 "kd_subdivision: non-finite bilinear error on cell [" + format_value(current.u0) +

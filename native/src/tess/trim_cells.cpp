@@ -295,6 +295,9 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
             std::vector<int> vertices;
             int entry = -1, exit = -1;  // crossing indices
             bool used = false;
+            // Trim points just before the entry and just after the exit (outside the
+            // cell): they orient a piece that only touches a side at one point.
+            Eigen::Vector2d before, after;
         };
         std::vector<Piece> pieces;
         std::vector<int> piece_of_entry(crossings.size(), -1);
@@ -303,6 +306,7 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
             if (!e || e->entry < 0) continue;
             Piece piece;
             piece.entry = e->entry;
+            piece.before = point(s, 0).uv;
             piece.vertices.push_back(table.add(crossings[e->entry].uv, &crossings[e->entry].xyz));
             int current = s;
             const int limit = offset[loop_of[s] + 1] - offset[loop_of[s]] + 1;
@@ -310,6 +314,7 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
                 const SegmentEvents* ce = events_of(current);
                 if (ce && ce->exit >= 0) {
                     piece.exit = ce->exit;
+                    piece.after = point(current, 1).uv;
                     break;
                 }
                 const PolylinePoint& b = point(current, 1);
@@ -364,9 +369,26 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
                     if (d == 0.0 && static_cast<size_t>(pi) == current) {
                         // A chain leaving where it entered: a clockwise one (a hole touching
                         // the side) keeps the whole perimeter, a counter-clockwise one none.
+                        // A chain that only touches the side (a trim vertex on it, zero
+                        // area) turns by the trim points around it: turning clockwise, the
+                        // kept region (on the left) is the cell's side.
                         std::vector<Eigen::Vector2d> uv;
                         for (int v : piece.vertices) uv.push_back(table.uv(v));
-                        if (signed_area(uv) < 0.0) d = 4.0;
+                        double area = signed_area(uv);
+                        if (area == 0.0)
+                            area = signed_area({piece.before, table.uv(piece.vertices.front()), piece.after});
+                        if (area < 0.0) d = 4.0;
+                    } else if (d == 0.0) {
+                        // Another chain entering where this one leaves: the trim touches the
+                        // side from inside. Turning clockwise there, the kept region reaches
+                        // the side, so the ring follows the perimeter instead.
+                        const Eigen::Vector2d at = crossings[piece.exit].uv;
+                        Eigen::Vector2d in = piece.before, out = pieces[pi].after;
+                        for (auto it = piece.vertices.rbegin(); it != piece.vertices.rend(); ++it)
+                            if (table.uv(*it) != at) { in = table.uv(*it); break; }
+                        for (int v : pieces[pi].vertices)
+                            if (table.uv(v) != at) { out = table.uv(v); break; }
+                        if (signed_area({in, at, out}) < 0.0) d = 4.0;
                     }
                     if (d < best_d) best_d = d, best = pi;
                 }

@@ -17,8 +17,9 @@ namespace trimkit::tess {
 struct TrimRegionOptions {
     // Polygon points per Bézier span of each coedge curve (at least
     // kMinCoedgeSamples per coedge). The area error of the polygon against the
-    // curve falls as 1/n²: 32 gives ~1e-6 relative on typical trims.
-    int samples_per_span = 32;
+    // curve falls as 1/n²: a circle of 4 quadratic spans at 256 per span is
+    // 1024-gon, 6e-6 relative low (2π²/(3n²)); 32 per span would be 4e-4.
+    int samples_per_span = 256;
 };
 
 constexpr int kMinCoedgeSamples = 16;
@@ -60,7 +61,7 @@ private:
 // grid lines and integrated with 4-point Gauss. The error is dominated by the
 // polygon approximation of the trim curves (see TrimRegionOptions) and by points
 // where a trim curve is tangent to v = const; it is ~1e-10 relative when the
-// trims follow iso-lines.
+// trims follow iso-lines; a disc of radius 0.3 comes out 3e-5 relative high.
 double trimmed_area(const geom::NurbsSurface& surface, const TrimRegion& region, int cells = 24,
                     int levels = 2);
 

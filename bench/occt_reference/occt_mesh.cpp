@@ -1,0 +1,198 @@
+// occt_mesh: meshes IGES/STEP files with Open CASCADE's BRepMesh_IncrementalMesh, as a
+// reference for `trimkit mesh --relative`. Per file: read with default reader settings,
+// D = diagonal of the tight bounding box (BRepBndLib::AddOptimal, no triangulation, no
+// shape tolerances), then BRepMesh_IncrementalMesh(shape, r·D, absolute, 0.5 rad, parallel).
+// Prints one JSON object per file and line. Counts are per face occurrence (an instanced
+// face counts once per placement); a face is failed when it has no triangles afterwards.
+// Usage: occt_mesh [-r R] [--obj OUT.obj] FILE...   (R default 0.001; --obj: one FILE)
+//   --obj writes the triangles in model space, per face vertices not welded, each face's
+//   triangles after `g face_N` (N from 0 in TopExp_Explorer order), reversed faces flipped.
+// Exit status: 0 if every file meshed without failed faces, 1 otherwise, 2 on usage.
+
+#include <BRepBndLib.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <IGESControl_Reader.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
+#include <Poly_Triangulation.hxx>
+#include <STEPControl_Reader.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+// A triangle is zero-area when twice its area is below this share of D²: the rounding
+// of a cross product of coordinates of size D is ~1e-16·D², and no real triangle of a
+// mesh at r >= 1e-4 comes near 1e-14·D².
+constexpr double kZeroAreaRelative = 1e-14;
+// OCCT's default angular deflection (radians), as in BRepMesh_IncrementalMesh's signature.
+constexpr double kAngularDeflection = 0.5;
+
+struct MeshStats {
+  int faces = 0, faces_failed = 0, zero_area = 0;
+  long triangles = 0, nodes = 0;
+  double max_deflection = 0.0;
+};
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = path.substr(path.find_last_of('.') + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+std::string base_name(const std::string& path) {
+  return path.substr(path.find_last_of('/') + 1);
+}
+
+// `text` as a JSON string literal (file names and OCCT messages: quotes, backslashes,
+// control characters).
+std::string json_string(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) >= 0x20) out += c;
+    else out += ' ';
+  }
+  return out + "\"";
+}
+
+// The shape of an IGES/STEP file with default reader settings; throws on failure.
+TopoDS_Shape read_shape(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  std::unique_ptr<XSControl_Reader> reader;
+  if (ext == "igs" || ext == "iges") reader = std::make_unique<IGESControl_Reader>();
+  else if (ext == "stp" || ext == "step") reader = std::make_unique<STEPControl_Reader>();
+  else throw std::runtime_error("unknown extension '." + ext + "'");
+  if (reader->ReadFile(path.c_str()) != IFSelect_RetDone) throw std::runtime_error("read failed");
+  reader->TransferRoots();
+  TopoDS_Shape shape = reader->OneShape();
+  if (shape.IsNull()) throw std::runtime_error("null shape");
+  return shape;
+}
+
+// Diagonal of `box` including its gap (0 for a void box).
+double diagonal(const Bnd_Box& box) { return std::sqrt(box.SquareExtent()); }
+
+// Counts the triangulation of every face occurrence of `shape` (D: bounding-box diagonal,
+// for zero-area triangles); appends it to `obj` when not null.
+MeshStats count_mesh(const TopoDS_Shape& shape, double D, std::FILE* obj) {
+  MeshStats s;
+  long obj_vertices = 0;
+  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next(), ++s.faces) {
+    const TopoDS_Face& face = TopoDS::Face(it.Current());
+    TopLoc_Location loc;
+    const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(face, loc);
+    if (mesh.IsNull() || mesh->NbTriangles() == 0) {
+      ++s.faces_failed;
+      continue;
+    }
+    s.triangles += mesh->NbTriangles();
+    s.nodes += mesh->NbNodes();
+    s.max_deflection = std::max(s.max_deflection, mesh->Deflection());
+    const gp_Trsf& placement = loc.Transformation();
+    std::vector<gp_Pnt> p(mesh->NbNodes() + 1);
+    for (int i = 1; i <= mesh->NbNodes(); ++i) p[i] = mesh->Node(i).Transformed(placement);
+    if (obj) {
+      std::fprintf(obj, "g face_%d\n", s.faces);
+      for (int i = 1; i <= mesh->NbNodes(); ++i)
+        std::fprintf(obj, "v %.17g %.17g %.17g\n", p[i].X(), p[i].Y(), p[i].Z());
+    }
+    const bool reversed = face.Orientation() == TopAbs_REVERSED;
+    for (int t = 1; t <= mesh->NbTriangles(); ++t) {
+      int a, b, c;
+      mesh->Triangle(t).Get(a, b, c);
+      if (reversed) std::swap(b, c);
+      const gp_Vec cross = gp_Vec(p[a], p[b]).Crossed(gp_Vec(p[a], p[c]));
+      if (cross.Magnitude() <= kZeroAreaRelative * D * D) ++s.zero_area;
+      if (obj) std::fprintf(obj, "f %ld %ld %ld\n", obj_vertices + a, obj_vertices + b, obj_vertices + c);
+    }
+    obj_vertices += mesh->NbNodes();
+  }
+  return s;
+}
+
+// Reads, meshes and prints one JSON line for `path`; true if every face got triangles.
+bool report(const std::string& path, double r, const char* obj_path) {
+  std::string json = "{\"file\": " + json_string(base_name(path));
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, ", \"tolerance_relative\": %g", r);
+  json += buffer;
+  bool ok = false;
+  try {
+    const TopoDS_Shape shape = read_shape(path);
+    Bnd_Box tight, loose;
+    BRepBndLib::AddOptimal(shape, tight, Standard_False, Standard_False);
+    BRepBndLib::Add(shape, loose, Standard_False);
+    const double D = diagonal(tight);
+
+    const auto start = std::chrono::steady_clock::now();
+    const BRepMesh_IncrementalMesh mesher(shape, r * D, Standard_False, kAngularDeflection,
+                                          Standard_True);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    std::FILE* obj = obj_path ? std::fopen(obj_path, "w") : nullptr;
+    if (obj_path && !obj) throw std::runtime_error(std::string("cannot write ") + obj_path);
+    if (obj) std::fprintf(obj, "# occt_mesh %s r=%g tolerance=%.17g\n", base_name(path).c_str(), r, r * D);
+    const MeshStats s = count_mesh(shape, D, obj);
+    if (obj) std::fclose(obj);
+    std::snprintf(buffer, sizeof buffer,
+                  ", \"tolerance\": %.6g, \"diagonal\": %.9g, \"diagonal_add\": %.9g, "
+                  "\"faces\": %d, \"faces_failed\": %d, \"triangles\": %ld, \"nodes\": %ld, "
+                  "\"zero_area_triangles\": %d, \"max_deflection\": %.6g, \"status_flags\": %d, "
+                  "\"mesh_seconds\": %.4f}",
+                  r * D, D, diagonal(loose), s.faces, s.faces_failed, s.triangles, s.nodes,
+                  s.zero_area, s.max_deflection, mesher.GetStatusFlags(), seconds);
+    json += buffer;
+    ok = s.faces_failed == 0;
+  } catch (const Standard_Failure& e) {
+    json += ", \"error\": " + json_string(std::string("OCCT: ") + e.GetMessageString()) + "}";
+  } catch (const std::exception& e) {
+    json += ", \"error\": " + json_string(e.what()) + "}";
+  }
+  std::printf("%s\n", json.c_str());
+  std::fflush(stdout);
+  return ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  double r = 0.001;
+  const char* obj = nullptr;
+  int first = 1;
+  for (; first + 1 < argc && argv[first][0] == '-'; first += 2) {
+    if (std::strcmp(argv[first], "-r") == 0) r = std::atof(argv[first + 1]);
+    else if (std::strcmp(argv[first], "--obj") == 0) obj = argv[first + 1];
+    else break;
+  }
+  if (first >= argc || !(r > 0.0) || (obj && argc - first != 1) || argv[first][0] == '-') {
+    std::fprintf(stderr, "usage: %s [-r R] [--obj OUT.obj] FILE...  (R > 0; --obj: one FILE)\n",
+                 argv[0]);
+    return 2;
+  }
+  // OCCT's reader messages go to stdout by default; keep stdout for the JSON lines.
+  Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+
+  bool all_ok = true;
+  for (int i = first; i < argc; ++i) all_ok = report(argv[i], r, obj) && all_ok;
+  return all_ok ? 0 : 1;
+}
