@@ -1,16 +1,50 @@
 // Bindings for native/src/io: reading models and their summaries.
 #include <pybind11/stl.h>
 
+#include "io/corner_attributes.h"
 #include "io/model_summary.h"
+#include "io/read_iges.h"
 #include "io/read_model.h"
+#include "io/write_mesh.h"
 #include "numpy_convert.h"
 
 namespace trimkit::bindings {
+
+namespace {
+
+// IGES text held in memory (e.g. stored inside a .blend) read like a file.
+geom::Model read_model_bytes(const py::bytes& data, const std::string& name) {
+    std::string text = data;
+    py::gil_scoped_release release;
+    return io::read_iges_text(text, name);
+}
+
+// (m, 3, 2) corner uvs and (m, 3, 3) corner normals.
+py::tuple corner_attributes(const geom::Model& model, const mesh::Mesh& mesh) {
+    io::CornerAttributes corners;
+    {
+        py::gil_scoped_release release;
+        corners = io::corner_attributes(model, mesh);
+    }
+    const auto T = static_cast<py::ssize_t>(mesh.triangle_count());
+    return py::make_tuple(rows_to_numpy<double, 2>(corners.uvs).reshape({T, py::ssize_t{3}, py::ssize_t{2}}),
+                          rows_to_numpy<double, 3>(corners.normals).reshape({T, py::ssize_t{3}, py::ssize_t{3}}));
+}
+
+}  // namespace
 
 void bind_io(py::module_& m) {
     m.def("read_model", &io::read_model, py::arg("path"),
           py::call_guard<py::gil_scoped_release>(),
           "Read an IGES model; raises RuntimeError 'FILE:LINE: reason' for a bad file.");
+
+    m.def("read_model_bytes", &read_model_bytes, py::arg("data"), py::arg("name"),
+          "Read an IGES model from bytes; `name` is used in messages ('NAME:LINE: reason').");
+    m.def("write_mesh", &io::write_mesh, py::arg("path"), py::arg("mesh"),
+          py::call_guard<py::gil_scoped_release>(),
+          "Write a Mesh as .obj, .ply, .stl or .glb (by extension).");
+    m.def("corner_attributes", &corner_attributes, py::arg("model"), py::arg("mesh"),
+          "Per-corner (u,v) in each triangle's own face, (m, 3, 2), and unit normals, (m, 3, 3).");
 
     py::class_<io::ModelSummary>(m, "ModelSummary")
         .def_readonly("file", &io::ModelSummary::file)

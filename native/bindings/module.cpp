@@ -8,6 +8,8 @@ namespace py = pybind11;
 namespace trimkit::bindings {
 void bind_geom(py::module_& m);
 void bind_io(py::module_& m);
+void bind_mesh(py::module_& m);
+void bind_tess(py::module_& m);
 }  // namespace trimkit::bindings
 
 PYBIND11_MODULE(_trimkit, m) {
@@ -17,5 +19,7 @@ PYBIND11_MODULE(_trimkit, m) {
     py::register_exception<trimkit::geom::ReadError>(m, "ReadError", PyExc_RuntimeError);
     py::register_exception<trimkit::geom::NumericalFailure>(m, "NumericalFailure", PyExc_RuntimeError);
     trimkit::bindings::bind_geom(m);
+    trimkit::bindings::bind_mesh(m);
+    trimkit::bindings::bind_tess(m);
     trimkit::bindings::bind_io(m);
 }

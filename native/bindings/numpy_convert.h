@@ -5,6 +5,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,52 @@ inline py::ssize_t expect_columns(const DoubleArray& a, py::ssize_t columns, con
         throw py::value_error(what + ": expected an array of shape (n, " + std::to_string(columns) +
                               "), got " + std::to_string(a.ndim()) + " dimensions");
     return a.shape(0);
+}
+
+using IntArray = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>;
+
+// (n, Dim) array of Scalar from n fixed-size rows (std::array or Eigen vectors).
+template <typename Scalar, int Dim, typename Rows>
+py::array_t<Scalar> rows_to_numpy(const Rows& rows) {
+    py::array_t<Scalar> out({static_cast<py::ssize_t>(rows.size()), static_cast<py::ssize_t>(Dim)});
+    auto view = out.template mutable_unchecked<2>();
+    for (size_t i = 0; i < rows.size(); ++i)
+        for (int k = 0; k < Dim; ++k) view(i, k) = static_cast<Scalar>(rows[i][k]);
+    return out;
+}
+
+// (n,) array from a vector.
+template <typename Scalar, typename T>
+py::array_t<Scalar> to_numpy_1d(const std::vector<T>& values) {
+    py::array_t<Scalar> out(static_cast<py::ssize_t>(values.size()));
+    auto view = out.template mutable_unchecked<1>();
+    for (size_t i = 0; i < values.size(); ++i) view(i) = static_cast<Scalar>(values[i]);
+    return out;
+}
+
+// Checks an (n, columns) array (any n when `rows` < 0, else exactly `rows`) and
+// copies it into `out` as n fixed-size rows; throws ValueError naming `what`.
+template <typename Array, typename Row>
+void rows_from_numpy(const Array& a, py::ssize_t columns, py::ssize_t rows, const std::string& what,
+                     std::vector<Row>& out) {
+    if (a.ndim() != 2 || a.shape(1) != columns || (rows >= 0 && a.shape(0) != rows))
+        throw py::value_error(what + ": expected an array of shape (" +
+                              (rows >= 0 ? std::to_string(rows) : std::string("n")) + ", " +
+                              std::to_string(columns) + ")");
+    auto view = a.template unchecked<2>();
+    out.resize(static_cast<size_t>(a.shape(0)));
+    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+        for (py::ssize_t k = 0; k < columns; ++k) out[i][k] = view(i, k);
+}
+
+// Checks a (rows,) array and copies it into `out`; throws ValueError naming `what`.
+template <typename Array, typename T>
+void values_from_numpy(const Array& a, py::ssize_t rows, const std::string& what, std::vector<T>& out) {
+    if (a.ndim() != 1 || a.shape(0) != rows)
+        throw py::value_error(what + ": expected an array of shape (" + std::to_string(rows) + ",)");
+    auto view = a.template unchecked<1>();
+    out.resize(static_cast<size_t>(rows));
+    for (py::ssize_t i = 0; i < rows; ++i) out[i] = static_cast<T>(view(i));
 }
 
 }  // namespace trimkit::bindings

@@ -87,7 +87,9 @@ int run_mesh(const std::vector<std::string>& argv) {
                  << ", \"reason\": " << json_string(result.failed_faces[k].reason) << "}";
         json << "], \"triangles\": " << result.mesh.triangle_count()
              << ", \"vertices\": " << result.mesh.vertex_count() << ", \"open_edges\": " << result.open_edges
-             << ", \"tolerance\": " << json_number(result.tolerance) << ", \"warnings\": " << result.warnings.size()
+             << ", \"tolerance\": " << json_number(result.tolerance) << ", \"warnings\": [";
+        for (size_t k = 0; k < result.warnings.size(); ++k) json << (k ? ", " : "") << json_string(result.warnings[k]);
+        json << "]"
              << ", \"seconds\": {\"read\": " << json_number(read_seconds)
              << ", \"trim\": " << json_number(result.seconds.trim)
              << ", \"surface\": " << json_number(result.seconds.surface)

@@ -1,0 +1,99 @@
+// Bindings for native/src/tess: options, tessellate_model (GIL released) and its
+// result. Enumerations cross as strings: mode "guaranteed" | "approximate",
+// trim_method "bezier3d" | "yang" | "param".
+#include <pybind11/stl.h>
+
+#include "tess/tessellate_model.h"
+#include "numpy_convert.h"
+
+namespace trimkit::bindings {
+
+namespace {
+
+std::string mode_name(tess::ErrorMode mode) {
+    return mode == tess::ErrorMode::kGuaranteed ? "guaranteed" : "approximate";
+}
+
+tess::ErrorMode mode_from_name(const std::string& name) {
+    if (name == "guaranteed") return tess::ErrorMode::kGuaranteed;
+    if (name == "approximate") return tess::ErrorMode::kApproximate;
+    throw py::value_error("TessellationOptions: mode = '" + name + "'; expected 'guaranteed' or 'approximate'");
+}
+
+std::string method_name(tess::TrimMethod method) {
+    switch (method) {
+        case tess::TrimMethod::kBezier3d: return "bezier3d";
+        case tess::TrimMethod::kYang: return "yang";
+        case tess::TrimMethod::kParam: return "param";
+    }
+    return "bezier3d";
+}
+
+tess::TrimMethod method_from_name(const std::string& name) {
+    if (name == "bezier3d") return tess::TrimMethod::kBezier3d;
+    if (name == "yang") return tess::TrimMethod::kYang;
+    if (name == "param") return tess::TrimMethod::kParam;
+    throw py::value_error("TessellationOptions: trim_method = '" + name + "'; expected 'bezier3d', 'yang' or 'param'");
+}
+
+tess::TessellationOptions make_options(double tolerance, double angle, const std::string& mode,
+                                       const std::string& trim_method, int threads) {
+    tess::TessellationOptions options;
+    options.tolerance = tolerance;
+    options.angle = angle;
+    options.mode = mode_from_name(mode);
+    options.trim_method = method_from_name(trim_method);
+    options.threads = threads;
+    return options;
+}
+
+}  // namespace
+
+void bind_tess(py::module_& m) {
+    const tess::TessellationOptions defaults;
+    py::class_<tess::TessellationOptions>(m, "TessellationOptions",
+                                          "What the tessellator is asked for; tolerance in model units, "
+                                          "angle in radians. Checked by tessellate_model (ValueError).")
+        .def(py::init(&make_options), py::arg("tolerance") = defaults.tolerance,
+             py::arg("angle") = defaults.angle, py::arg("mode") = mode_name(defaults.mode),
+             py::arg("trim_method") = method_name(defaults.trim_method), py::arg("threads") = defaults.threads)
+        .def_readwrite("tolerance", &tess::TessellationOptions::tolerance)
+        .def_readwrite("angle", &tess::TessellationOptions::angle)
+        .def_property(
+            "mode", [](const tess::TessellationOptions& o) { return mode_name(o.mode); },
+            [](tess::TessellationOptions& o, const std::string& s) { o.mode = mode_from_name(s); })
+        .def_property(
+            "trim_method", [](const tess::TessellationOptions& o) { return method_name(o.trim_method); },
+            [](tess::TessellationOptions& o, const std::string& s) { o.trim_method = method_from_name(s); })
+        .def_readwrite("threads", &tess::TessellationOptions::threads);
+
+    py::class_<tess::FailedFace>(m, "FailedFace")
+        .def_readonly("face", &tess::FailedFace::face)
+        .def_readonly("reason", &tess::FailedFace::reason);
+
+    py::class_<tess::TessellationTimings>(m, "TessellationTimings")
+        .def_readonly("trim", &tess::TessellationTimings::trim)
+        .def_readonly("surface", &tess::TessellationTimings::surface)
+        .def_readonly("triangulate", &tess::TessellationTimings::triangulate)
+        .def_readonly("weld", &tess::TessellationTimings::weld);
+
+    py::class_<tess::TessellationResult>(m, "TessellationResult")
+        .def_readonly("mesh", &tess::TessellationResult::mesh)
+        .def_readonly("faces", &tess::TessellationResult::faces)
+        .def_readonly("faces_meshed", &tess::TessellationResult::faces_meshed)
+        .def_readonly("failed_faces", &tess::TessellationResult::failed_faces)
+        .def_readonly("open_edges", &tess::TessellationResult::open_edges)
+        .def_readonly("tolerance", &tess::TessellationResult::tolerance)
+        .def_readonly("seconds", &tess::TessellationResult::seconds)
+        .def_readonly("warnings", &tess::TessellationResult::warnings);
+
+    m.def("tessellate_model", &tess::tessellate_model, py::arg("model"),
+          py::arg("options") = tess::TessellationOptions{}, py::call_guard<py::gil_scoped_release>(),
+          "Mesh every face of the model (faces that fail are listed in failed_faces). "
+          "ValueError for invalid options.");
+    m.def("model_diagonal", &tess::model_diagonal, py::arg("model"),
+          py::call_guard<py::gil_scoped_release>(),
+          "Diagonal of the trimmed faces' bounding box: what a relative tolerance is a fraction of.");
+}
+
+}  // namespace trimkit::bindings
