@@ -12,10 +12,11 @@ namespace {
 // One de Casteljau step ([Garcia] Sec. 2, [Sei89]), in place: the degree-m net
 // `b` becomes the degree-(m-1) net b'_ijk = t0 b_{i+1,j,k} + t1 b_{i,j+1,k} + t2 b_{i,j,k+1}.
 // With the storage order of BezierTriangle::index, b'_ijk lands where b_{i+1,j,k}
-// was and reads only positions at or after it, so increasing order is safe.
+// was and reads only positions at or after it, so storage order (i, then j
+// descending) is safe.
 void casteljau_step(std::vector<Eigen::Vector3d>& b, int m, const Eigen::Vector3d& t) {
-    for (int i = 0; i <= m - 1; ++i)
-        for (int j = 0; j <= m - 1 - i; ++j) {
+    for (int i = m - 1; i >= 0; --i)
+        for (int j = m - 1 - i; j >= 0; --j) {
             const int p = BezierTriangle::index(m - 1, i, j);
             b[p] = t[0] * b[BezierTriangle::index(m, i + 1, j)] + t[1] * b[BezierTriangle::index(m, i, j + 1)] +
                    t[2] * b[BezierTriangle::index(m, i, j)];

@@ -30,6 +30,10 @@ constexpr double kParameterCurveMatch = 1e-3;
 constexpr double kResolutionsMatch = 10.0;
 // Bridged loop gaps larger than this fraction of the surface size are reported.
 constexpr double kReportedGap = 1e-4;
+// A projected curve whose points all lie within this fraction of the domain from
+// a seam (the boundary of a closed direction) runs along the seam, and may be on
+// either side of it; the projector puts it on one side by its own start.
+constexpr double kOnSeam = 1e-6;
 
 // One piece of a boundary as the file gives it: model-space curves (in the
 // face's local space, in traversal order) and/or parameter-space curves (native
@@ -103,8 +107,57 @@ struct LoopBuilder {
     int loop_number;
     bool projected_reported = false;
 
+    // Indices into the loop's coedges of projected curves lying along a seam.
+    std::vector<std::size_t> on_seam;
+
     LoopBuilder(IgesReader& r, const IgesSurface& s, geom::Face& f, int n)
         : reader(r), S(s), projector(s.nurbs), face(f), loop_number(n) {}
+
+    // +1 / -1 when all of c's control points lie on the high / low end of the
+    // closed direction `dir` (0: u, 1: v), 0 otherwise.
+    int seam_side(const NurbsCurve2d& c, int dir) const {
+        const auto [a, b] = dir == 0 ? S.nurbs.domain_u() : S.nurbs.domain_v();
+        const double eps = kOnSeam * (b - a);
+        bool low = true, high = true;
+        for (const Vector2d& p : c.points()) {
+            low = low && std::abs(p[dir] - a) <= eps;
+            high = high && std::abs(p[dir] - b) <= eps;
+        }
+        return low ? -1 : high ? 1 : 0;
+    }
+
+    // A curve projected along a seam continues the loop on the side where the
+    // previous coedge ends (a seam edge used twice by one loop, as in a cylinder
+    // bounded by two circles and a seam line, is on the low side once and on the
+    // high side once; the projector cannot know which). Run after all add()s.
+    void settle_seam_sides(geom::Loop& loop) const {
+        const std::size_t n = loop.coedges.size();
+        if (on_seam.empty() || n < 2) return;
+        std::vector<char> flagged(n, 0);
+        for (std::size_t k : on_seam) flagged[k] = 1;
+        // Start after a coedge that is not on the seam, so its end is settled.
+        std::size_t first = 0;
+        while (first < n && flagged[first]) ++first;
+        if (first == n) return;
+        for (std::size_t step = 1; step < n; ++step) {
+            const std::size_t k = (first + step) % n;
+            if (!flagged[k]) continue;
+            geom::Coedge& e = loop.coedges[k];
+            const Vector2d prev_end = end_of(loop.coedges[(k + n - 1) % n].curve);
+            for (int dir = 0; dir < 2; ++dir) {
+                const bool closed = dir == 0 ? projector.closed_u() : projector.closed_v();
+                const int side = seam_side(e.curve, dir);
+                if (!closed || side == 0) continue;
+                const auto [a, b] = dir == 0 ? S.nurbs.domain_u() : S.nurbs.domain_v();
+                const double here = side < 0 ? a : b, other = side < 0 ? b : a;
+                if (std::abs(prev_end[dir] - other) >= std::abs(prev_end[dir] - here)) continue;
+                std::vector<Vector2d> P = e.curve.points();
+                for (Vector2d& p : P) p[dir] = other;
+                e.curve = NurbsCurve2d(e.curve.degree(), e.curve.knots(), std::move(P),
+                                       e.curve.is_rational() ? e.curve.weights() : std::vector<double>{});
+            }
+        }
+    }
 
     Vector3d at(const Vector2d& uv) const {
         const auto [u0, u1] = S.nurbs.domain_u();
@@ -162,7 +215,12 @@ struct LoopBuilder {
         if (!use_param || pcs.empty()) {
             if (seg.model.empty()) return;  // nothing usable: the loop closer bridges it
             pcs.clear();
-            for (const NurbsCurve3d& k : seg.model) pcs.push_back(geom::project_curve(projector, k));
+            for (const NurbsCurve3d& k : seg.model) {
+                pcs.push_back(geom::project_curve(projector, k));
+                if ((projector.closed_u() && seam_side(pcs.back(), 0) != 0) ||
+                    (projector.closed_v() && seam_side(pcs.back(), 1) != 0))
+                    on_seam.push_back(loop.coedges.size() + pcs.size() - 1);
+            }
             if (!projected_reported) {
                 face.warnings.push_back("trim curve " + std::to_string(loop_number) +
                                         " projected from model space");
@@ -338,6 +396,7 @@ std::vector<int> IgesReader::read_face_entity(int de, const Eigen::Affine3d& pla
             loop.outer = first_is_outer && i == 0;
             LoopBuilder lb(*this, S, face, static_cast<int>(i + 1));
             for (const Segment& s : loops[i]) lb.add(s, loop);
+            lb.settle_seam_sides(loop);
             face.loops.push_back(std::move(loop));
         }
     } else if (is_surface_type(e.type)) {
@@ -436,6 +495,7 @@ int IgesReader::read_brep_face(int de, const Eigen::Affine3d& placement, bool re
         geom::Loop loop;
         LoopBuilder lb(*this, S, face, static_cast<int>(i + 1));
         for (const Segment& s : loops[i]) lb.add(s, loop);
+        lb.settle_seam_sides(loop);
         face.loops.push_back(std::move(loop));
     }
     if (outer_flag == 0) {

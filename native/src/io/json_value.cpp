@@ -86,6 +86,7 @@ private:
         space();
         if (pos_ >= s_.size()) fail("unexpected end");
         JsonValue v;
+        v.offset = pos_;
         const char c = s_[pos_];
         if (c == '{') {
             ++pos_;

@@ -19,6 +19,7 @@ public:
     enum class Kind { kNull, kBool, kNumber, kString, kArray, kObject };
 
     Kind kind = Kind::kNull;
+    std::size_t offset = 0;  // byte offset of the value's first character in the text (for FILE:LINE errors)
     bool boolean = false;
     double number = 0.0;
     std::string string;

@@ -1,0 +1,123 @@
+"""Command-line conversion inside Blender, calling what the operators call.
+
+    blender -b -P addon/trimkit/batch.py -- --input A.igs [--input B.igs] \\
+        --tolerance 0.1 [--relative] --output OUT.(blend|glb|obj)
+
+--tolerance is in the files' units (a fraction of the model's size with
+--relative). Prints one line per file; exits 1 with "trimkit batch: FILE: reason"
+on failure. From a studio's own script:
+
+    blender -b --python-expr "import trimkit.batch as b; b.convert(['A.igs'], 'A.blend', 0.1)"
+
+.glb and .obj are written by trimkit's own writers (Debian's Blender 3.4 glTF
+exporter fails with numpy >= 1.24, which removed np.bool).
+"""
+import argparse
+import math
+import pathlib
+import sys
+
+if __package__ in (None, ""):  # run as a script: import the package this file is in
+    _here = pathlib.Path(__file__).resolve().parent
+    sys.path.insert(0, str(_here.parent))
+    _build = _here.parents[1] / "build" / "python"  # development checkout: the built module
+    if _build.is_dir():
+        sys.path.append(str(_build))
+    __package__ = _here.name
+    import importlib
+    importlib.import_module(__package__)
+
+import bpy
+
+from . import importer, io
+
+
+def ensure_registered():
+    """Registers the add-on's classes when the package was imported, not enabled."""
+    if not hasattr(bpy.types.Object, "trimkit"):
+        sys.modules[__package__].register()
+
+
+def convert(inputs, output, tolerance, relative=False, angle=30.0, mode="guaranteed",
+            trim_method="bezier3d", split="BODY", clear_scene=True, report=print):
+    """Converts CAD files to one output (.blend, .glb or .obj).
+
+    tolerance: in the files' units, or a fraction of each model's diagonal when
+    `relative`; angle in degrees. Returns one summary dict per input; raises
+    RuntimeError/ValueError naming the file on the first failure, before the
+    output is written.
+    """
+    output = pathlib.Path(output)
+    suffix = output.suffix.lower()
+    if suffix not in (".blend", ".glb", ".obj"):
+        raise ValueError(f"{output}: expected a .blend, .glb or .obj output")
+    summaries, parts = [], []
+    if suffix == ".blend":
+        ensure_registered()
+        if clear_scene:
+            bpy.ops.wm.read_homefile(use_empty=True)
+    for path in inputs:
+        try:
+            if suffix == ".blend":
+                settings = importer.ImportSettings(relative=relative, relative_tolerance=tolerance,
+                                                   angle=math.radians(angle), mode=mode,
+                                                   trim_method=trim_method, split=split)
+                model, _ = io.read_source(path)
+                scale = importer.scene_scale(model, bpy.context.scene, 0.0)
+                settings.tolerance = tolerance * scale
+                objects, result = importer.import_file(bpy.context, path, settings)
+                count = len(objects)
+            else:
+                model, _ = io.read_source(path)
+                result = io.tessellate(model, tolerance, relative=relative, angle=math.radians(angle),
+                                       mode=mode, trim_method=trim_method, scale=model.scale_to_metres,
+                                       split=split, stem=pathlib.Path(path).stem)
+                parts += result.parts
+                count = len(result.parts)
+        except (RuntimeError, ValueError, OSError) as err:
+            raise type(err)(f"{path}: {err}") from err
+        summary = dict(file=str(path), objects=count, faces=result.faces, triangles=result.triangles,
+                       failed_faces=len(result.failed_faces), tolerance=result.tolerance,
+                       seconds=result.seconds)
+        summaries.append(summary)
+        if report:
+            report(f"{pathlib.Path(path).name}: {count} objects, {result.triangles} triangles, "
+                   f"{result.faces - len(result.failed_faces)}/{result.faces} faces, "
+                   f"tolerance {result.tolerance:.6g}, {result.seconds:.2f} s")
+    output.parent.mkdir(parents=True, exist_ok=True)
+    if suffix == ".blend":
+        bpy.ops.wm.save_as_mainfile(filepath=str(output.resolve()))
+    else:
+        io.write_mesh(output, parts)
+    return summaries
+
+
+def parse(argv):
+    parser = argparse.ArgumentParser(prog="blender -b -P batch.py --",
+                                     description="Convert CAD files to .blend, .glb or .obj with trimkit.")
+    parser.add_argument("--input", action="append", required=True, help="IGES file (repeatable)")
+    parser.add_argument("--output", required=True, help="OUT.blend, OUT.glb or OUT.obj")
+    parser.add_argument("--tolerance", type=float, required=True,
+                        help="in the files' units, or a fraction of the model's size with --relative")
+    parser.add_argument("--relative", action="store_true")
+    parser.add_argument("--angle", type=float, default=30.0, help="sharp-edge angle, degrees")
+    parser.add_argument("--mode", choices=["guaranteed", "approximate"], default="guaranteed")
+    parser.add_argument("--trim-method", choices=["bezier3d", "yang", "param"], default="bezier3d")
+    parser.add_argument("--split", choices=["BODY", "FACE", "MODEL"], default="BODY")
+    return parser.parse_args(argv)
+
+
+def main():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    args = parse(argv)
+    try:
+        convert(args.input, args.output, args.tolerance, relative=args.relative, angle=args.angle,
+                mode=args.mode, trim_method=args.trim_method, split=args.split)
+    except (RuntimeError, ValueError, OSError, ImportError) as err:
+        print(f"trimkit batch: {err}", file=sys.stderr)
+        sys.exit(1)
+    print(f"trimkit batch: wrote {args.output}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,158 @@
+"""Operators: File > Import > IGES (and STEP when the module has it), and
+re-meshing selected trimkit objects. Each gathers its properties and delegates
+to importer.py."""
+import math
+
+import bpy
+from bpy.props import BoolProperty, EnumProperty, FloatProperty, StringProperty
+from bpy_extras.io_utils import ImportHelper
+
+from . import importer, io, properties
+
+SPLIT_ITEMS = [
+    ('BODY', "Per Body", "One object per body (solid or shell); faces in no body together"),
+    ('FACE', "Per Face", "One object per CAD face"),
+    ('MODEL', "Whole Model", "One object for the whole file"),
+]
+
+
+class ImportCadBase(ImportHelper):
+    """Shared options of the CAD importers."""
+    bl_options = {'REGISTER', 'UNDO', 'PRESET'}
+
+    relative: BoolProperty(name="Relative Tolerance", default=True,
+                           description="Tolerance as a fraction of the model's size instead of a length")
+    relative_tolerance: FloatProperty(name="Fraction", default=0.001, min=1e-7, soft_max=0.05, precision=5,
+                                      step=0.01, description="Tolerance as a fraction of the model's diagonal")
+    tolerance: properties.tolerance_property(
+        "Tolerance", "Largest distance from the mesh to the exact surface, in scene units")
+    angle: properties.angle_property()
+    mode: EnumProperty(name="Mode", items=properties.MODE_ITEMS, default='guaranteed')
+    trim_method: EnumProperty(name="Trim Method", items=properties.TRIM_ITEMS, default='bezier3d')
+    use_file_units: BoolProperty(name="File Units", default=True,
+                                 description="Scale from the file's units to metres")
+    scale: FloatProperty(name="Scale", default=1.0, min=1e-9, soft_max=1000.0,
+                         description="Model units to scene units, when not using the file's units")
+    split: EnumProperty(name="Objects", items=SPLIT_ITEMS, default='BODY')
+    smooth: BoolProperty(name="Smooth Shading", default=True,
+                         description="Smooth shading with custom normals from the exact surface")
+
+    exact_normals: BoolProperty(name="Exact Normals", default=True,
+                                description="Custom split normals from the exact surface (slow above ~500k triangles)")
+
+    def settings(self):
+        return importer.ImportSettings(
+            tolerance=self.tolerance, relative=self.relative, relative_tolerance=self.relative_tolerance,
+            angle=self.angle, mode=self.mode, trim_method=self.trim_method,
+            scale=0.0 if self.use_file_units else self.scale, split=self.split, smooth=self.smooth,
+            exact_normals=self.exact_normals)
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_split = True
+        layout.prop(self, "relative")
+        layout.prop(self, "relative_tolerance" if self.relative else "tolerance")
+        layout.prop(self, "angle")
+        layout.prop(self, "mode")
+        layout.prop(self, "trim_method")
+        layout.prop(self, "use_file_units")
+        row = layout.row()
+        row.enabled = not self.use_file_units
+        row.prop(self, "scale")
+        layout.prop(self, "split")
+        layout.prop(self, "smooth")
+        row = layout.row()
+        row.enabled = self.smooth
+        row.prop(self, "exact_normals")
+
+    def execute(self, context):
+        wm = context.window_manager
+        wm.progress_begin(0.0, 1.0)
+        try:
+            objects, result = importer.import_file(context, self.filepath, self.settings(),
+                                                   progress=wm.progress_update)
+        except (RuntimeError, ValueError, OSError, ImportError) as err:
+            self.report({'ERROR'}, str(err))
+            return {'CANCELLED'}
+        finally:
+            wm.progress_end()
+        for face, reason in result.failed_faces:
+            self.report({'WARNING'}, f"face {face} not meshed: {reason}")
+        self.report({'INFO'}, f"{len(objects)} objects, {result.triangles} triangles, "
+                              f"{result.faces - len(result.failed_faces)}/{result.faces} faces in "
+                              f"{result.seconds:.2f} s")
+        return {'FINISHED'}
+
+
+class IMPORT_SCENE_OT_trimkit_iges(bpy.types.Operator, ImportCadBase):
+    """Import an IGES file as meshes within a tolerance of the exact surfaces"""
+    bl_idname = "import_scene.trimkit_iges"
+    bl_label = "Import IGES (trimkit)"
+    filename_ext = ".igs"
+    filter_glob: StringProperty(default="*.igs;*.iges", options={'HIDDEN'})
+
+
+class IMPORT_SCENE_OT_trimkit_step(bpy.types.Operator, ImportCadBase):
+    """Import a STEP file as meshes within a tolerance of the exact surfaces"""
+    bl_idname = "import_scene.trimkit_step"
+    bl_label = "Import STEP (trimkit)"
+    filename_ext = ".stp"
+    filter_glob: StringProperty(default="*.stp;*.step", options={'HIDDEN'})
+
+
+class OBJECT_OT_trimkit_retessellate(bpy.types.Operator):
+    """Re-mesh the selected trimkit objects from their stored CAD geometry with their own settings"""
+    bl_idname = "object.trimkit_retessellate"
+    bl_label = "Re-tessellate"
+    bl_options = {'REGISTER', 'UNDO'}
+
+    @classmethod
+    def poll(cls, context):
+        return any(importer.is_trimkit(o) for o in context.selected_objects) or \
+            importer.is_trimkit(context.active_object)
+
+    def execute(self, context):
+        objects = [o for o in context.selected_objects if importer.is_trimkit(o)]
+        if not objects and importer.is_trimkit(context.active_object):
+            objects = [context.active_object]
+        wm = context.window_manager
+        wm.progress_begin(0.0, 1.0)
+        try:
+            results = importer.retessellate(objects, progress=wm.progress_update)
+        except (RuntimeError, ValueError, ImportError) as err:
+            self.report({'ERROR'}, str(err))
+            return {'CANCELLED'}
+        finally:
+            wm.progress_end()
+        for result in results:
+            for face, reason in result.failed_faces:
+                self.report({'WARNING'}, f"face {face} not meshed: {reason}")
+        triangles = sum(o.trimkit.triangles for o in objects)
+        self.report({'INFO'}, f"{len(objects)} objects re-meshed, {triangles} triangles")
+        return {'FINISHED'}
+
+
+def menu_import(self, context):
+    self.layout.operator(IMPORT_SCENE_OT_trimkit_iges.bl_idname, text="IGES (.igs, .iges) [trimkit]")
+    if io.has_step():
+        self.layout.operator(IMPORT_SCENE_OT_trimkit_step.bl_idname, text="STEP (.stp, .step) [trimkit]")
+
+
+def classes():
+    """The operator classes to register: STEP only when _trimkit can read it."""
+    found = [IMPORT_SCENE_OT_trimkit_iges, OBJECT_OT_trimkit_retessellate]
+    if io.has_step():
+        found.insert(1, IMPORT_SCENE_OT_trimkit_step)
+    return found
+
+
+def register():
+    for cls in classes():
+        bpy.utils.register_class(cls)
+    bpy.types.TOPBAR_MT_file_import.append(menu_import)
+
+
+def unregister():
+    bpy.types.TOPBAR_MT_file_import.remove(menu_import)
+    for cls in reversed(classes()):
+        bpy.utils.unregister_class(cls)

@@ -1,0 +1,69 @@
+"""Object.trimkit: the settings and statistics of a mesh made from CAD geometry."""
+import math
+
+import bpy
+from bpy.props import (BoolProperty, EnumProperty, FloatProperty, IntProperty, PointerProperty,
+                       StringProperty)
+
+MODE_ITEMS = [
+    ('guaranteed', "Guaranteed", "Every mesh point within the tolerance of the exact surface (conservative bound)"),
+    ('approximate', "Approximate", "The same bound from surface samples: fewer triangles, no strict guarantee"),
+]
+TRIM_ITEMS = [
+    ('bezier3d', "Bézier 3D", "Trim curves lifted to 3D Bézier curves, line-distance bound"),
+    ('yang', "Yang", "Trim curve step length from derivative bounds"),
+    ('param', "Parameter", "Chords in parameter space (baseline, no 3D guarantee)"),
+]
+PART_ITEMS = [
+    ('MODEL', "Model", "All faces (or the faces in no body)"),
+    ('BODY', "Body", "One body"),
+    ('FACE', "Face", "One face"),
+]
+
+
+def tolerance_property(name, description, default=0.001):
+    return FloatProperty(name=name, description=description, default=default, min=0.0,
+                         soft_min=1e-6, precision=5, step=0.01, subtype='DISTANCE', unit='LENGTH')
+
+
+def angle_property():
+    return FloatProperty(name="Angle", description="Edges where the surface normals turn more than this are sharp",
+                         default=math.radians(30.0), min=0.0, max=math.pi, subtype='ANGLE')
+
+
+class TRIMKIT_PG_object(bpy.types.PropertyGroup):
+    source: PointerProperty(type=bpy.types.Text, name="Source",
+                            description="Text datablock holding the CAD file (compressed) this mesh was made from")
+    source_name: StringProperty(name="File", description="Name of the CAD file")
+    part: EnumProperty(name="Part", items=PART_ITEMS, default='MODEL')
+    part_index: IntProperty(name="Part Index", default=-1)
+    scale: FloatProperty(name="Scale", description="Model units to Blender units", default=1.0, min=0.0)
+
+    tolerance: tolerance_property("Tolerance", "Largest distance from the mesh to the exact surface (viewport)")
+    render_tolerance: tolerance_property(
+        "Render Tolerance", "Tolerance for final renders (F12, blender -b -f); 0 uses the viewport tolerance", 0.0)
+    relative: BoolProperty(name="Relative", description="Tolerance as a fraction of the model's size", default=False)
+    relative_tolerance: FloatProperty(name="Relative Tolerance", description="Fraction of the model's diagonal",
+                                      default=0.001, min=0.0, soft_min=1e-6, soft_max=0.1, precision=5, step=0.01)
+    angle: angle_property()
+    mode: EnumProperty(name="Mode", items=MODE_ITEMS, default='guaranteed')
+    trim_method: EnumProperty(name="Trim Method", items=TRIM_ITEMS, default='bezier3d')
+    smooth: BoolProperty(name="Smooth", description="Smooth shading", default=True)
+    exact_normals: BoolProperty(name="Exact Normals", default=True,
+                                description="Custom split normals from the exact surface (slow above ~500k triangles)")
+
+    faces: IntProperty(name="Faces", description="CAD faces in this object")
+    triangles: IntProperty(name="Triangles")
+    seconds: FloatProperty(name="Seconds", description="Time of the last tessellation", precision=3)
+    failed_faces: IntProperty(name="Failed Faces")
+    failed_report: StringProperty(name="Failures", description="Failed faces by id and reason")
+
+
+def register():
+    bpy.utils.register_class(TRIMKIT_PG_object)
+    bpy.types.Object.trimkit = PointerProperty(type=TRIMKIT_PG_object)
+
+
+def unregister():
+    del bpy.types.Object.trimkit
+    bpy.utils.unregister_class(TRIMKIT_PG_object)
