@@ -143,7 +143,8 @@ struct LoopBuilder {
             const std::size_t k = (first + step) % n;
             if (!flagged[k]) continue;
             geom::Coedge& e = loop.coedges[k];
-            const Vector2d prev_end = end_of(loop.coedges[(k + n - 1) % n].curve);
+            const NurbsCurve2d& prev = loop.coedges[(k + n - 1) % n].curve;
+            const Vector2d prev_end = prev.evaluate(prev.domain().second);
             for (int dir = 0; dir < 2; ++dir) {
                 const bool closed = dir == 0 ? projector.closed_u() : projector.closed_v();
                 const int side = seam_side(e.curve, dir);

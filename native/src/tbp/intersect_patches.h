@@ -22,9 +22,9 @@ namespace trimkit::tbp {
 constexpr double kLinkRelativeTolerance = 1e-10;
 
 struct IntersectionPoint {
-    Eigen::Vector3d position;  // model space
-    Eigen::Vector3d uvw_a;     // parameters on patch A (root domain)
-    Eigen::Vector3d uvw_b;     // parameters on patch B
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();  // model space
+    Eigen::Vector3d uvw_a = Eigen::Vector3d::Zero();     // parameters on patch A (root domain)
+    Eigen::Vector3d uvw_b = Eigen::Vector3d::Zero();     // parameters on patch B
 };
 
 // One leaf-level segment, with the leaves (indices in each hierarchy's leaf level) it came from.

@@ -8,6 +8,7 @@
 #include <array>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace trimkit::tbp {
 

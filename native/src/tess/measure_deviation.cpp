@@ -1,6 +1,7 @@
 #include "tess/measure_deviation.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <exception>
@@ -30,6 +31,9 @@ constexpr int kTriangleChunk = 256;
 constexpr double kSuspectDistance = 0.01;
 // Starts per direction of the retry of a suspect projection.
 constexpr int kRetryGrid = 4;
+// A foot point within this fraction of the domain of a boundary may be clamped
+// there (a seam of a closed surface, a pole): such projections are retried.
+constexpr double kBoundaryZone = 1e-6;
 // Isolines and points per isoline used to estimate a face's 3D extent in u and v.
 constexpr int kExtentLines = 5, kExtentPoints = 17;
 
@@ -263,13 +267,53 @@ DeviationReport measure_deviation(const geom::Model& model, const mesh::Mesh& me
         const auto [u0, u1] = s.domain_u();
         const auto [v0, v1] = s.domain_v();
         std::vector<Eigen::Vector2d> starts;
-        if (projectors[f]) starts.push_back(projectors[f]->invert(x, &uv));
+        if (projectors[f]) {
+            starts.push_back(projectors[f]->invert(x, &uv));
+            starts.push_back(projectors[f]->invert(x));
+            // Across a seam: Newton from the other side of the domain.
+            if (projectors[f]->closed_u()) starts.push_back(foot_point(s, x, {u0 + u1 - uv.x(), uv.y()}));
+            if (projectors[f]->closed_v()) starts.push_back(foot_point(s, x, {uv.x(), v0 + v1 - uv.y()}));
+        }
         for (int i = 0; i < kRetryGrid; ++i)
             for (int j = 0; j < kRetryGrid; ++j)
                 starts.push_back(foot_point(s, x, {u0 + (u1 - u0) * (i + 0.5) / kRetryGrid,
                                                    v0 + (v1 - v0) * (j + 0.5) / kRetryGrid}));
         for (const auto& q : starts) d = std::min(d, (s.evaluate(q.x(), q.y()) - x).norm());
         return d;
+    };
+    // On a closed surface a triangle whose corners lie on both sides of the seam
+    // (a welded seam vertex keeps one side's uv) is unwrapped by one period before
+    // its (u,v) is interpolated, and the result wrapped back into the domain.
+    const auto unwrapped_uvs = [&](int f, const std::array<std::int32_t, 3>& tri) {
+        std::array<Eigen::Vector2d, 3> q{mesh.uvs[tri[0]], mesh.uvs[tri[1]], mesh.uvs[tri[2]]};
+        if (!projectors[f]) return q;
+        const geom::NurbsSurface& s = model.faces[f].surface;
+        const std::array<std::pair<double, double>, 2> dom{s.domain_u(), s.domain_v()};
+        const std::array<bool, 2> closed{projectors[f]->closed_u(), projectors[f]->closed_v()};
+        for (int k = 0; k < 2; ++k) {
+            if (!closed[k]) continue;
+            const double period = dom[k].second - dom[k].first;
+            const double lo = std::min({q[0][k], q[1][k], q[2][k]}), hi = std::max({q[0][k], q[1][k], q[2][k]});
+            if (hi - lo <= 0.5 * period) continue;
+            for (auto& p : q)
+                if (p[k] < dom[k].first + 0.5 * period) p[k] += period;
+        }
+        return q;
+    };
+    const auto wrap = [&](int f, Eigen::Vector2d uv) {
+        const geom::NurbsSurface& s = model.faces[f].surface;
+        const auto [u0, u1] = s.domain_u();
+        const auto [v0, v1] = s.domain_v();
+        if (uv.x() > u1) uv.x() -= u1 - u0;
+        if (uv.y() > v1) uv.y() -= v1 - v0;
+        return uv;
+    };
+    const auto on_boundary = [&](int f, const Eigen::Vector2d& uv) {
+        const geom::NurbsSurface& s = model.faces[f].surface;
+        const auto [u0, u1] = s.domain_u();
+        const auto [v0, v1] = s.domain_v();
+        const double zu = kBoundaryZone * (u1 - u0), zv = kBoundaryZone * (v1 - v0);
+        return uv.x() - u0 < zu || u1 - uv.x() < zu || uv.y() - v0 < zv || v1 - uv.y() < zv;
     };
     parallel_for(chunks, threads, [&](int chunk) {
         Accumulator acc;
@@ -305,6 +349,8 @@ DeviationReport measure_deviation(const geom::Model& model, const mesh::Mesh& me
             }
             const geom::NurbsSurface& s = model.faces[f].surface;
             const double longest = std::max({(A - B).norm(), (B - C).norm(), (C - A).norm()});
+            std::array<Eigen::Vector2d, 3> tri_uv;
+            if (use_uvs) tri_uv = unwrapped_uvs(f, tri);
             double tri_max = 0.0;
             for (int a = 0; a <= n; ++a)
                 for (int b = 0; a + b <= n; ++b) {
@@ -312,12 +358,12 @@ DeviationReport measure_deviation(const geom::Model& model, const mesh::Mesh& me
                     const Eigen::Vector3d x = l0 * A + l1 * B + l2 * C;
                     double d;
                     if (use_uvs) {
-                        const Eigen::Vector2d uv = l0 * mesh.uvs[tri[0]] + l1 * mesh.uvs[tri[1]] + l2 * mesh.uvs[tri[2]];
+                        const Eigen::Vector2d uv = wrap(f, l0 * tri_uv[0] + l1 * tri_uv[1] + l2 * tri_uv[2]);
                         const double d_uv = (s.evaluate(uv.x(), uv.y()) - x).norm();
                         const Eigen::Vector2d foot = foot_point(s, x, uv);
                         d = std::min(d_uv, (s.evaluate(foot.x(), foot.y()) - x).norm());
                         uv_max = std::max(uv_max, d_uv);
-                        if (d > kSuspectDistance * longest) d = retry(f, x, foot, d);
+                        if (d > kSuspectDistance * longest || on_boundary(f, foot)) d = retry(f, x, foot, d);
                     } else if (projectors[f]) {
                         const Eigen::Vector2d* start = near ? &*near : nullptr;
                         const Eigen::Vector2d uv = projectors[f]->invert(x, start);

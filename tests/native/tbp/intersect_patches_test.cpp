@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "tbp/triangle_intersection.h"
@@ -60,9 +61,9 @@ TEST(IntersectPatches, FlatPatchesCrossAtKnownLine) {
             EXPECT_LT((a.evaluate(p.uvw_a) - p.position).norm(), 1e-9);
             EXPECT_LT((b.evaluate(p.uvw_b) - p.position).norm(), 1e-9);
         }
-        // the line runs through B from y = -0.75 (B's lower edge at z = 0) to y = 0.75
+        // the line runs from B's edge at y = -0.75 to A's edge x + y = 1, at y = 0.7 / 1.1
         const auto& pts = r.components[0].points;
-        EXPECT_NEAR(std::abs(pts.front().position.y() - pts.back().position.y()), 1.5, 1e-9);
+        EXPECT_NEAR(std::abs(pts.front().position.y() - pts.back().position.y()), 0.75 + 0.7 / 1.1, 1e-9);
         const PatchIntersection brute = intersect_patches(ha, hb, false);
         EXPECT_EQ(brute.segments.size(), r.segments.size());
         EXPECT_LT(r.stats.triangle_tests, brute.stats.triangle_tests);
@@ -96,7 +97,12 @@ TEST(IntersectPatches, CubicAgainstPlaneMatchesSampling) {
                 if ((z0 < 0) == (z1 < 0)) continue;
                 const Eigen::Vector3d x = a.evaluate(t0 + (t1 - t0) * (z0 / (z0 - z1)));
                 double best = 1e9;
-                for (const IntersectionPoint& p : r.components[0].points) best = std::min(best, (p.position - x).norm());
+                const auto& pts = r.components[0].points;
+                for (std::size_t k = 0; k < pts.size(); ++k) {  // distance to the closed polyline
+                    const Eigen::Vector3d p = pts[k].position, q = pts[(k + 1) % pts.size()].position;
+                    const double t = std::clamp((x - p).dot(q - p) / (q - p).squaredNorm(), 0.0, 1.0);
+                    best = std::min(best, (p + t * (q - p) - x).norm());
+                }
                 far = std::max(far, best);
             }
         std::printf("cubic/plane levels %d lod 3: %zu points, |z - c| <= %.3g, sampled curve within %.3g\n", levels,
