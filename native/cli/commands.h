@@ -18,4 +18,7 @@ int run_mesh(const std::vector<std::string>& args);
 // trimkit check MODEL MESH [--json] [--samples N] [--threads N]
 int run_check(const std::vector<std::string>& args);
 
+// trimkit tbp mesh|intersect|trim|inside|from-mesh ... (TBP solids, [Garcia])
+int run_tbp(const std::vector<std::string>& args);
+
 }  // namespace trimkit::cli

@@ -22,7 +22,9 @@ const char* const kUsage =
     "       [--trim-method bezier3d|yang|param] [--threads N] [--json]\n"
     "                         tessellate to .obj .ply .stl .glb within T (model units)\n"
     "  check MODEL MESH [--json] [--samples N] [--threads N]\n"
-    "                         two-sided deviation of MESH from MODEL's faces, area ratio, open edges\n";
+    "                         two-sided deviation of MESH from MODEL's faces, area ratio, open edges\n"
+    "  tbp mesh|intersect|trim|inside|from-mesh ...\n"
+    "                         TBP solids (.tbp): mesh at a level/lod, intersect, trim, point-in-solid, PN triangles\n";
 
 int fail(int status, const std::string& message) {
     std::cerr << "trimkit: " << message << "\n";
@@ -37,6 +39,7 @@ int main(int argc, char** argv) {
         {"info", trimkit::cli::run_info},
         {"mesh", trimkit::cli::run_mesh},
         {"check", trimkit::cli::run_check},
+        {"tbp", trimkit::cli::run_tbp},
     };
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cout << kUsage;

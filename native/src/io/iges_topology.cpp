@@ -400,6 +400,21 @@ std::vector<int> IgesReader::read_face_entity(int de, const Eigen::Affine3d& pla
             lb.settle_seam_sides(loop);
             face.loops.push_back(std::move(loop));
         }
+        // The outer loop encloses the others, so it has the largest area; some
+        // writers list a hole first (UKI60998.igs: a 143 whose first boundary is
+        // a circular hole, the rectangle second). Trust the areas over the order.
+        if (first_is_outer && face.loops.size() > 1) {
+            std::size_t largest = 0;
+            for (std::size_t i = 1; i < face.loops.size(); ++i)
+                if (std::fabs(signed_area(face.loops[i])) > std::fabs(signed_area(face.loops[largest])))
+                    largest = i;
+            if (largest != 0) {
+                face.loops[0].outer = false;
+                face.loops[largest].outer = true;
+                face.warnings.push_back("boundary " + std::to_string(largest + 1) +
+                                        " encloses boundary 1; taken as the outer boundary");
+            }
+        }
     } else if (is_surface_type(e.type)) {
         // A bare surface: its natural boundary.
         surface_de = de;

@@ -97,6 +97,7 @@ std::vector<std::int32_t> representatives(const Mesh& mesh, const WeldOptions& o
 
     const double tol2 = options.tolerance * options.tolerance;
     const bool split = options.keep_split_normals && mesh.has_normals();
+    const bool split_uvs = options.keep_split_uvs && mesh.has_uvs();
     const double min_cos = std::cos(std::min(options.split_normal_angle, kPi));
     std::vector<std::int32_t> rep(n, -1);
     for (std::int32_t r : order) {
@@ -113,6 +114,7 @@ std::vector<std::int32_t> representatives(const Mesh& mesh, const WeldOptions& o
                         if (rep[j] != -1) continue;
                         if ((mesh.positions[j] - p).squaredNorm() > tol2) continue;
                         if (split && mesh.normals[j].dot(mesh.normals[r]) < min_cos) continue;
+                        if (split_uvs && mesh.uvs[j] != mesh.uvs[r]) continue;
                         rep[j] = r;
                     }
                 }

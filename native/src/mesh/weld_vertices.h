@@ -22,6 +22,10 @@ struct WeldOptions {
     // than split_normal_angle stay separate, so creases keep their split normals.
     bool keep_split_normals = false;
     double split_normal_angle = 1e-3;  // radians
+    // When true (and the mesh has uvs), vertices with different uvs stay separate:
+    // a closed surface's seam, or two CAD faces meeting along an edge, keep each
+    // side's own (u,v) (the mesh is then closed by position, not by index).
+    bool keep_split_uvs = false;
     // Drop triangles that lose an edge by welding (two equal indices), with their face ids.
     bool remove_degenerate_triangles = true;
 };

@@ -44,7 +44,10 @@ struct Walker {
         out.push_back(s);
     }
 
-    // [Garcia] Algorithm 4.1, TBP_INT(P1, P2, max_level).
+    // [Garcia] Algorithm 4.1, TBP_INT(P1, P2, max_level). Re-derived: the
+    // extracted conditions "(P1.level, P2.level = max_level)" / "!= max_level"
+    // read as "both at max_level" / "neither at max_level"; the leaves of each
+    // tree are its own max_level, so trees of different depth work too.
     void tbp_int(int la, int ka, int lb, int kb) {
         const TbpNode& na = a.node(la, ka);
         const TbpNode& nb = b.node(lb, kb);

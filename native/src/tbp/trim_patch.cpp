@@ -88,7 +88,12 @@ struct Trimmer {
     }
 
     // [Garcia] Algorithm 5.1, TRIM(p, obj, max_level); kept whole nodes are
-    // emitted by the caller (so the topmost ones become sub-TBPs).
+    // emitted by the caller (so the topmost ones become sub-TBPs). Re-derived:
+    // the extraction's second "then { if inclusion_value != OUTSIDE" is the
+    // else branch (partly inside: recurse); "to be deleted" means on the removed
+    // side, which is inside for keep = outside and outside for keep = inside.
+    // Departure: a node with a cut leaf below skips the box test (its box
+    // necessarily meets the solid) and recurses at once.
     NodeState trim(int l, int k) {
         const TbpNode& n = target.node(l, k);
         if (l == target.levels()) {

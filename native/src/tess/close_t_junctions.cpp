@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mesh/open_edges.h"
+#include "tess/snap_boundary_vertices.h"
 
 namespace trimkit::tess {
 namespace {
@@ -30,7 +31,13 @@ struct CellKeyHash {
 std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
     std::size_t inserted = 0;
     for (int pass = 0; pass < kMaxPasses; ++pass) {
-        const mesh::OpenEdges open = mesh::open_edges(mesh);
+        // Topology by position: a face's vertex and the other face's vertex at the
+        // same position are one vertex (each keeps its own uv and normal).
+        const std::vector<std::int32_t> group = position_groups(mesh);
+        mesh::Mesh topology;
+        topology.positions = mesh.positions;
+        topology.triangles = position_triangles(mesh, group);
+        const mesh::OpenEdges open = mesh::open_edges(topology);
         if (open.boundary.empty()) break;
         // Boundary vertices in a hash grid with cells about the mean open edge length.
         std::vector<int> vertices;
@@ -53,9 +60,9 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
 
         // The triangle using each directed edge.
         std::map<std::pair<int, int>, int> owner;
-        for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (size_t t = 0; t < topology.triangles.size(); ++t)
             for (int k = 0; k < 3; ++k)
-                owner[{mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
+                owner[{topology.triangles[t][k], topology.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
 
         std::vector<char> split(mesh.triangles.size(), 0);
         std::vector<std::array<std::int32_t, 3>> added;
@@ -64,8 +71,8 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
         for (const auto& e : open.boundary) {
             const auto it = owner.find({e[0], e[1]});
             if (it == owner.end() || split[it->second]) continue;
-            const Eigen::Vector3d& a = mesh.positions[e[0]];
-            const Eigen::Vector3d& b = mesh.positions[e[1]];
+            const Eigen::Vector3d a = mesh.positions[e[0]];
+            const Eigen::Vector3d b = mesh.positions[e[1]];
             const Eigen::Vector3d ab = b - a;
             const double len2 = ab.squaredNorm();
             if (!(len2 > 0.0)) continue;
@@ -80,7 +87,7 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
                         if (found == grid.end()) continue;
                         for (int v : found->second) {
                             if (v == e[0] || v == e[1]) continue;
-                            const Eigen::Vector3d& p = mesh.positions[v];
+                            const Eigen::Vector3d p = mesh.positions[v];
                             const double t = (p - a).dot(ab) / len2;
                             if (!(t > 0.0 && t < 1.0)) continue;
                             if ((a + t * ab - p).norm() > distance) continue;
@@ -93,13 +100,25 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
             const int t = it->second;
             split[t] = 1;
             const auto tri = mesh.triangles[t];
+            const auto topo = topology.triangles[t];
             int k = 0;
-            while (!(tri[k] == e[0] && tri[(k + 1) % 3] == e[1])) ++k;
+            while (!(topo[k] == e[0] && topo[(k + 1) % 3] == e[1])) ++k;
+            const int ia = tri[k], ib = tri[(k + 1) % 3];
             const int c = tri[(k + 2) % 3];
-            int previous = e[0];
+            int previous = ia;
             bool first = true;
-            for (const auto& [param, v] : on_edge) {
-                if (v == c) continue;
+            for (const auto& [param, g] : on_edge) {
+                if (g == topo[(k + 2) % 3]) continue;
+                // A vertex of this face at the other face's position, with this
+                // face's uv and normal interpolated along the split edge.
+                const int v = static_cast<int>(mesh.positions.size());
+                const Eigen::Vector3d at = mesh.positions[g];
+                mesh.positions.push_back(at);
+                if (mesh.has_uvs()) mesh.uvs.push_back((1.0 - param) * mesh.uvs[ia] + param * mesh.uvs[ib]);
+                if (mesh.has_normals()) {
+                    Eigen::Vector3d n = (1.0 - param) * mesh.normals[ia] + param * mesh.normals[ib];
+                    mesh.normals.push_back(n.norm() > 0.0 ? Eigen::Vector3d(n.normalized()) : mesh.normals[ia]);
+                }
                 if (first) {
                     mesh.triangles[t] = {previous, v, c};
                     first = false;
@@ -111,7 +130,7 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
                 ++pass_inserted;
             }
             if (first) continue;
-            added.push_back({previous, e[1], c});
+            added.push_back({previous, ib, c});
             added_ids.push_back(mesh.face_ids.empty() ? 0 : mesh.face_ids[t]);
         }
         mesh.triangles.insert(mesh.triangles.end(), added.begin(), added.end());

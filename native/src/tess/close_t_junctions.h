@@ -2,6 +2,10 @@
 // an open boundary edge of another (both faces put their grid crossings on the
 // same 3D chord of a shared edge, at different places), the edge's triangle is
 // split at that vertex. Positions do not move, so the geometry is unchanged.
+// Topology is by position (snap_boundary_vertices.h): the split inserts a new
+// vertex of the split triangle's face at the other face's vertex position, with
+// (u,v) and normal interpolated along the split edge, so every vertex keeps its
+// own face's parameters.
 #pragma once
 
 #include <cstddef>
@@ -13,7 +17,7 @@ namespace trimkit::tess {
 // Splits triangles on open edges at boundary vertices lying on those edges within
 // `distance` (model units, >= 0) and strictly between their ends. Face ids follow
 // the split triangle; flagged edges are left as they are (recompute them). Returns the number of
-// vertices inserted into edges. The mesh must be welded (shared vertices).
+// vertices inserted into edges.
 std::size_t close_t_junctions(mesh::Mesh& mesh, double distance);
 
 }  // namespace trimkit::tess

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <thread>
 
@@ -15,6 +16,7 @@
 #include "tess/close_t_junctions.h"
 #include "tess/repair_trim_loop.h"
 #include "tess/share_edge_points.h"
+#include "tess/snap_boundary_vertices.h"
 #include "tess/tessellate_face.h"
 
 namespace trimkit::tess {
@@ -26,10 +28,15 @@ using Clock = std::chrono::steady_clock;
 // one point when joining and repairing loops (far above double rounding of the
 // parameters, far below any trim segment the approximation makes).
 constexpr double kSnapUvRelative = 1e-9;
-// Models with shared edges meet exactly along edges; only the vertices where edges
-// end can differ (by the file's gap), so their boundary weld uses this share of the
-// tolerance. Models without (loose trimmed surfaces) weld within the tolerance.
+// Models with shared edges meet exactly along edges and at their vertices (edge ends
+// are unified, unify_edge_ends), so their boundary snap only mops up what the file's
+// topology misses, within this share of the tolerance. Models without (loose trimmed
+// surfaces) snap within the tolerance.
 constexpr double kSharedEdgeWeldShare = 0.1;
+// Consecutive trim points closer than this fraction of the tolerance (in 3D) are one
+// point: joints of coedges that meet up to rounding (1e-12 apart) would otherwise
+// leave zero-length boundary segments that no face on the other side matches.
+constexpr double kDuplicatePointShare = 1e-6;
 // Samples per trim curve and per side of the (u,v) grid for model_diagonal.
 constexpr int kDiagonalCurveSamples = 16, kDiagonalGridSamples = 12;
 
@@ -71,11 +78,19 @@ struct FaceOutput {
 // Flags face-boundary edges (open, or between different faces) and sharp ones
 // (triangle normals differing by more than `angle`).
 void flag_edges(mesh::Mesh& mesh, double angle) {
+    // Edges by position (vertices are per face); each flagged edge names the
+    // vertices of its first triangle.
+    const std::vector<std::int32_t> group = position_groups(mesh);
     std::map<std::pair<int, int>, std::vector<int>> uses;
+    std::map<std::pair<int, int>, std::pair<int, int>> named;
     for (size_t t = 0; t < mesh.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k) {
-            const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
-            if (a != b) uses[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(t));
+            const int va = mesh.triangles[t][k], vb = mesh.triangles[t][(k + 1) % 3];
+            const int a = group[va], b = group[vb];
+            if (a == b) continue;
+            const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+            uses[key].push_back(static_cast<int>(t));
+            named.emplace(key, std::make_pair(va, vb));
         }
     auto normal = [&](int t) {
         const auto& tri = mesh.triangles[t];
@@ -94,7 +109,73 @@ void flag_edges(mesh::Mesh& mesh, double angle) {
             const double len = n0.norm() * n1.norm();
             if (len > 0.0 && n0.dot(n1) < cos_angle * len) flags |= mesh::kSharp;
         }
-        if (flags) mesh.edges.push_back({edge.first, edge.second, flags});
+        if (flags) mesh.edges.push_back({named[edge].first, named[edge].second, flags});
+    }
+}
+
+// Drops interior points of a polyline within `distance` (3D) of the previous kept
+// point; the ends stay (they are the coedge's vertices).
+void drop_duplicate_points(TrimPolyline& polyline, double distance) {
+    auto& pts = polyline.points;
+    if (pts.size() < 3) return;
+    std::vector<PolylinePoint> kept{pts.front()};
+    for (std::size_t i = 1; i + 1 < pts.size(); ++i)
+        if ((pts[i].xyz - kept.back().xyz).norm() > distance) kept.push_back(pts[i]);
+    if (kept.size() > 1 && (pts.back().xyz - kept.back().xyz).norm() <= distance) kept.pop_back();
+    kept.push_back(pts.back());
+    pts = std::move(kept);
+}
+
+// One model vertex per edge end: the ends of edges that meet in some loop (a
+// coedge's end and the next coedge's start) are unified, by union-find over the
+// keys 2e (start of edge e) and 2e+1 (its end), onto the point of the smallest key
+// of their class when all lie within `reach` of it. Both faces of every edge then
+// see identical vertex positions, and the mesh closes without a distance weld.
+void unify_edge_ends(const geom::Model& model, std::vector<std::vector<Eigen::Vector3d>>& edge_points,
+                     std::vector<std::optional<TrimPolyline>>& edge_polyline,
+                     const std::vector<bool>& reversed_on_first, double reach) {
+    const int ne = static_cast<int>(model.edges.size());
+    std::vector<int> parent(2 * ne);
+    std::iota(parent.begin(), parent.end(), 0);
+    const auto find = [&](int k) {
+        while (parent[k] != k) k = parent[k] = parent[parent[k]];
+        return k;
+    };
+    const auto usable = [&](int e) { return e >= 0 && e < ne && edge_points[e].size() >= 2; };
+    for (const geom::Face& face : model.faces)
+        for (const geom::Loop& loop : face.loops) {
+            const std::size_t n = loop.coedges.size();
+            for (std::size_t c = 0; c < n; ++c) {
+                const geom::Coedge& a = loop.coedges[c];
+                const geom::Coedge& b = loop.coedges[(c + 1) % n];
+                if (!usable(a.edge) || !usable(b.edge)) continue;
+                const int end_a = 2 * a.edge + (a.edge_reversed ? 0 : 1);
+                const int start_b = 2 * b.edge + (b.edge_reversed ? 1 : 0);
+                const int ra = find(end_a), rb = find(start_b);
+                if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+            }
+        }
+    const auto point = [&](int k) -> Eigen::Vector3d& {
+        auto& pts = edge_points[k / 2];
+        return k % 2 == 0 ? pts.front() : pts.back();
+    };
+    std::vector<std::vector<int>> classes(2 * ne);
+    for (int k = 0; k < 2 * ne; ++k)
+        if (usable(k / 2)) classes[find(k)].push_back(k);
+    for (int r = 0; r < 2 * ne; ++r) {
+        if (classes[r].size() < 2) continue;
+        const Eigen::Vector3d target = point(r);
+        bool near = true;
+        for (int k : classes[r]) near = near && (point(k) - target).norm() <= reach;
+        if (!near) continue;
+        for (int k : classes[r]) {
+            point(k) = target;
+            // The first face's polyline runs along the coedge: its ends in traversal order.
+            auto& poly = edge_polyline[k / 2];
+            if (!poly || poly->points.empty()) continue;
+            const bool at_start = (k % 2 == 0) != reversed_on_first[k / 2];
+            (at_start ? poly->points.front() : poly->points.back()).xyz = target;
+        }
     }
 }
 
@@ -140,6 +221,16 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
             // The faces using the edge approximate it themselves (and report failures).
         }
     });
+    std::vector<bool> reversed_on_first(model.edges.size(), false);
+    for (int e : shared) {
+        const geom::Face& face = model.faces[first[e].face];
+        reversed_on_first[e] = face.loops[first[e].loop].coedges[first[e].coedge].edge_reversed;
+        if (edge_polyline[e]) {
+            drop_duplicate_points(*edge_polyline[e], kDuplicatePointShare * options.tolerance);
+            edge_points[e] = edge_points_from(*edge_polyline[e], reversed_on_first[e]);
+        }
+    }
+    unify_edge_ends(model, edge_points, edge_polyline, reversed_on_first, options.tolerance);
     const double edge_seconds = seconds_since(start);
 
     // Phase 2: faces.
@@ -174,6 +265,7 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
                         polylines.push_back(approximate_trim_curve(face.surface, coedge.curve, trim_tol,
                                                                    options.trim_method));
                         polylines.back().edge = e;
+                        drop_duplicate_points(polylines.back(), kDuplicatePointShare * options.tolerance);
                     }
                 }
                 LoopRepairReport report;
@@ -187,6 +279,13 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
             }
             out.trim_seconds = seconds_since(trim_start);
             out.mesh = tessellate_face(face, polygons, options, f, &out.timings);
+            // Exact duplicates within the face (same position and uv) become one
+            // vertex; faces are never merged by index (each keeps its own uvs).
+            mesh::WeldOptions exact;
+            exact.keep_split_uvs = true;
+            mesh::weld_vertices(out.mesh, exact);
+            if (out.mesh.triangle_count() == 0)
+                out.error = "face " + std::to_string(f) + ": no triangles (the trimmed region is empty or degenerate)";
         } catch (const geom::NumericalFailure& e) {
             out.error = e.what();
         } catch (const geom::InvalidInput& e) {
@@ -225,30 +324,17 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
         result.seconds.trim = edge_seconds + face_wall;
     }
 
-    // Weld: boundary vertices within the weld tolerance onto common positions, then
-    // coincident vertices; close T-junctions between faces; flag edges.
+    // Join the faces by position: snap open-boundary vertices within the weld
+    // tolerance (never collapsing a triangle, never moving a vertex by more than
+    // it), close T-junctions between faces, flag edges. Vertices stay per face.
     start = Clock::now();
     mesh::Mesh& m = result.mesh;
     if (m.vertex_count() > 0) {
         const double weld_tol = (shared.empty() ? 1.0 : kSharedEdgeWeldShare) * options.tolerance;
-        std::vector<int> boundary;
-        for (const auto& e : m.edges)
-            if (e.flags & mesh::kFaceBoundary) boundary.push_back(e.v0), boundary.push_back(e.v1);
-        std::sort(boundary.begin(), boundary.end());
-        boundary.erase(std::unique(boundary.begin(), boundary.end()), boundary.end());
-        mesh::Mesh points;
-        for (int v : boundary) points.positions.push_back(m.positions[v]);
-        mesh::WeldOptions boundary_weld;
-        boundary_weld.tolerance = weld_tol;
-        const mesh::WeldResult clusters = mesh::weld_vertices(points, boundary_weld);
-        for (size_t k = 0; k < boundary.size(); ++k)
-            m.positions[boundary[k]] = points.positions[clusters.vertex_map[k]];
-        mesh::WeldOptions exact;
-        exact.tolerance = 0.0;
-        mesh::weld_vertices(m, exact);
+        snap_boundary_vertices(m, weld_tol);
         close_t_junctions(m, weld_tol);
         flag_edges(m, options.angle);
-        result.open_edges = mesh::count_open_edges(m);
+        result.open_edges = count_position_open_edges(m);
     }
     result.seconds.weld = seconds_since(start);
     (void)start_all;

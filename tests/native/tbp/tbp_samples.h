@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -41,6 +42,47 @@ inline TbpSolid box_solid(const Eigen::Vector3d& lo = Eigen::Vector3d::Zero(),
     add_quad(s.patches, v(0, 0, 0), v(0, 0, 1), v(0, 1, 1), v(0, 1, 0), n);  // x = lo, -x
     add_quad(s.patches, v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1), n);  // x = hi, +x
     return s;
+}
+
+}  // namespace trimkit::tbp::test
+
+#include <map>
+
+#include "mesh/mesh.h"
+
+namespace trimkit::tbp::test {
+
+// An icosphere of radius r around c: the icosahedron subdivided `levels` times,
+// vertices pushed onto the sphere; triangles counter-clockwise seen from outside.
+inline mesh::Mesh icosphere(int levels, double r = 1.0, const Eigen::Vector3d& c = Eigen::Vector3d::Zero()) {
+    const double t = (1 + std::sqrt(5.0)) / 2;
+    std::vector<Eigen::Vector3d> V = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                                      {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    for (auto& v : V) v.normalize();
+    std::vector<std::array<int, 3>> F = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                         {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                         {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                         {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+    for (int l = 0; l < levels; ++l) {
+        std::map<std::pair<int, int>, int> mid;
+        auto m = [&](int a, int b) {
+            auto key = std::minmax(a, b);
+            auto it = mid.find(key);
+            if (it != mid.end()) return it->second;
+            V.push_back((V[a] + V[b]).normalized());
+            return mid[key] = static_cast<int>(V.size()) - 1;
+        };
+        std::vector<std::array<int, 3>> G;
+        for (const auto& f : F) {
+            const int a = m(f[0], f[1]), b = m(f[1], f[2]), cc = m(f[2], f[0]);
+            G.push_back({f[0], a, cc}), G.push_back({f[1], b, a}), G.push_back({f[2], cc, b}), G.push_back({a, b, cc});
+        }
+        F = G;
+    }
+    mesh::Mesh out;
+    for (const auto& v : V) out.positions.push_back(c + r * v);
+    for (const auto& f : F) out.triangles.push_back({f[0], f[1], f[2]});
+    return out;
 }
 
 }  // namespace trimkit::tbp::test

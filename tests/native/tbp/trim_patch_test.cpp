@@ -7,10 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "mesh/open_edges.h"
+#include "tbp/polygonize.h"
 #include "tbp_samples.h"
 
 namespace trimkit::tbp {
@@ -96,6 +98,80 @@ TEST(TrimPatch, HoleInTheMiddleGivesTwoLoops) {
     EXPECT_GE(loops, 2);
     std::size_t sub = parts[0].untrimmed.size() + parts[1].untrimmed.size();
     EXPECT_GT(sub, 0u);
+}
+
+}  // namespace
+}  // namespace trimkit::tbp
+
+#include "tbp/from_mesh.h"
+
+namespace trimkit::tbp {
+namespace {
+
+// Distance from x to the solid's surface: nearest sample of a fine pattern,
+// then Gauss-Newton on that patch and its runners-up (clamped to the domain).
+double distance_to_solid(const TbpSolid& s, const Eigen::Vector3d& x) {
+    const DomainPattern pat = triangle_pattern(12);
+    std::vector<std::pair<double, std::pair<int, int>>> best;
+    for (std::size_t p = 0; p < s.patches.size(); ++p)
+        for (std::size_t q = 0; q < pat.points.size(); ++q)
+            best.push_back({(s.patches[p].evaluate(pat.points[q]) - x).norm(), {int(p), int(q)}});
+    std::partial_sort(best.begin(), best.begin() + 6, best.end());
+    double d = INFINITY;
+    for (int c = 0; c < 6; ++c) {
+        const TbpPatch& b = s.patches[best[c].second.first];
+        Eigen::Vector3d t = pat.points[best[c].second.second];
+        for (int it = 0; it < 30; ++it) {
+            Eigen::Matrix<double, 3, 2> J;
+            J.col(0) = b.derivative_u(t);
+            J.col(1) = b.derivative_v(t);
+            const Eigen::Vector2d step = (J.transpose() * J).ldlt().solve(J.transpose() * (x - b.evaluate(t)));
+            t.head<2>() += step;
+            t = t.cwiseMax(0.0);
+            t[2] = 1 - t[0] - t[1];
+            if (t[2] < 0) t.head<2>() /= (t[0] + t[1]), t[2] = 0;
+        }
+        d = std::min(d, (b.evaluate(t) - x).norm());
+    }
+    return d;
+}
+
+TEST(TrimPatch, CurvedPatchAgainstPnIcosphereConverges) {
+    const TbpSolid sphere = pn_triangles(test::icosphere(1));
+    std::vector<Eigen::Vector3d> P;
+    const Eigen::Vector3d a(-3, -2, 0.2), b(3, -2, 0.2), c(0, 3, 0.2);
+    for (int i = 3; i >= 0; --i)
+        for (int j = 3 - i; j >= 0; --j) {
+            Eigen::Vector3d p = (i * a + j * b + (3 - i - j) * c) / 3;
+            if (i == 1 && j == 1) p.z() += 0.6;  // z = 0.2 + 3.6 u v w
+            P.push_back(p);
+        }
+    const TbpPatch target(3, P);
+    std::vector<double> areas, distances;
+    const int settings[][2] = {{1, 1}, {1, 3}, {2, 2}, {2, 3}, {3, 2}};
+    for (const auto& lv : settings) {
+        TrimOptions o;
+        o.levels = lv[0];
+        o.lod = lv[1];
+        const TrimResult r = trim_patch(target, sphere, o);
+        double worst = 0;
+        int cut = 0;
+        for (const TrimBoundary& bd : r.boundaries)
+            for (std::size_t k = 0; k < bd.points.size(); ++k)
+                if (bd.on_cut[k]) ++cut, worst = std::max(worst, distance_to_solid(sphere, bd.points[k]));
+        areas.push_back(mesh::surface_area(r.mesh));
+        distances.push_back(worst);
+        std::printf("curved x PN icosphere levels %d lod %d: remaining area %.9f, boundary to tool <= %.3g "
+                    "(%d cut edges, %zu sub-TBPs, %lld triangle tests, %.3f s)\n",
+                    lv[0], lv[1], areas.back(), worst, cut, r.untrimmed.size(), r.stats.intersection.triangle_tests,
+                    r.stats.seconds);
+        EXPECT_GT(cut, 0);
+        EXPECT_EQ(r.boundaries.size(), 2u);  // the patch's outline and the hole
+    }
+    // converging: later changes are smaller than the first, the boundary approaches the tool
+    EXPECT_LT(std::abs(areas[4] - areas[3]), std::abs(areas[1] - areas[0]));
+    EXPECT_LT(distances.back(), distances.front());
+    EXPECT_LT(distances.back(), 2e-3);
 }
 
 }  // namespace

@@ -1,0 +1,172 @@
+#include "tbp/from_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "geom/error.h"
+#include "mesh/weld_vertices.h"
+#include "tbp/polygonize.h"
+
+#include <Eigen/LU>
+
+#ifdef TRIMKIT_HAVE_OPENSUBDIV
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+#endif
+
+namespace trimkit::tbp {
+
+TbpSolid pn_triangles(const mesh::Mesh& input) {
+    mesh::validate(input);
+    if (input.triangles.empty()) throw geom::InvalidInput("pn_triangles: the mesh has no triangles");
+    mesh::Mesh m;
+    m.positions = input.positions;
+    m.triangles = input.triangles;
+    mesh::WeldOptions weld;
+    weld.tolerance = kWeldRelativeTolerance * mesh::bounding_box(m).diagonal().norm();
+    mesh::weld_vertices(m, weld);
+
+    // Angle-weighted vertex normals.
+    std::vector<Eigen::Vector3d> N(m.positions.size(), Eigen::Vector3d::Zero());
+    for (const auto& t : m.triangles) {
+        const Eigen::Vector3d n = (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]);
+        if (n.norm() == 0) continue;
+        for (int c = 0; c < 3; ++c) {
+            const Eigen::Vector3d e1 = m.positions[t[(c + 1) % 3]] - m.positions[t[c]];
+            const Eigen::Vector3d e2 = m.positions[t[(c + 2) % 3]] - m.positions[t[c]];
+            const double angle = std::atan2(e1.cross(e2).norm(), e1.dot(e2));
+            N[t[c]] += angle * n.normalized();
+        }
+    }
+    for (std::size_t v = 0; v < N.size(); ++v) {
+        if (N[v].norm() == 0) {
+            bool used = false;
+            for (const auto& t : m.triangles) used |= t[0] == int(v) || t[1] == int(v) || t[2] == int(v);
+            if (used)
+                throw geom::NumericalFailure("pn_triangles: vertex " + std::to_string(v) +
+                                             " has no normal (its triangles cancel or are degenerate)");
+            continue;
+        }
+        N[v].normalize();
+    }
+
+    TbpSolid solid;
+    solid.name = "pn";
+    for (const auto& t : m.triangles) {
+        const Eigen::Vector3d P[3] = {m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]};
+        const Eigen::Vector3d n[3] = {N[t[0]], N[t[1]], N[t[2]]};
+        // [VPBM01] Sec. 3.1: edge point near Pi towards Pj: (2 Pi + Pj - w_ij Ni) / 3,
+        // w_ij = (Pj - Pi) . Ni; centre b111 = E + (E - V) / 2.
+        auto edge = [&](int i, int j) { return (2 * P[i] + P[j] - (P[j] - P[i]).dot(n[i]) * n[i]) / 3.0; };
+        const Eigen::Vector3d b210 = edge(0, 1), b120 = edge(1, 0), b021 = edge(1, 2), b012 = edge(2, 1),
+                              b102 = edge(2, 0), b201 = edge(0, 2);
+        const Eigen::Vector3d E = (b210 + b120 + b021 + b012 + b102 + b201) / 6.0;
+        const Eigen::Vector3d V = (P[0] + P[1] + P[2]) / 3.0;
+        const Eigen::Vector3d b111 = E + (E - V) / 2.0;
+        // storage order b300 b210 b201 b120 b111 b102 b030 b021 b012 b003
+        solid.patches.emplace_back(3, std::vector<Eigen::Vector3d>{P[0], b210, b201, b120, b111, b102, P[1], b021, b012, P[2]});
+    }
+    return solid;
+}
+
+namespace {
+
+// Relative distance below which a quartic patch counts as the exact limit surface.
+constexpr double kExactRelativeTolerance = 1e-9;
+
+mesh::Mesh welded_cage(const mesh::Mesh& input) {
+    mesh::validate(input);
+    if (input.triangles.empty()) throw geom::InvalidInput("loop_quartics: the mesh has no triangles");
+    mesh::Mesh m;
+    m.positions = input.positions;
+    m.triangles = input.triangles;
+    mesh::WeldOptions weld;
+    weld.tolerance = kWeldRelativeTolerance * mesh::bounding_box(m).diagonal().norm();
+    mesh::weld_vertices(m, weld);
+    return m;
+}
+
+}  // namespace
+
+LoopConversion loop_quartics(const mesh::Mesh& input) {
+#ifndef TRIMKIT_HAVE_OPENSUBDIV
+    (void)input;
+    throw geom::NumericalFailure("loop_quartics: trimkit was built without OpenSubdiv");
+#else
+    using namespace OpenSubdiv;
+    const mesh::Mesh m = welded_cage(input);
+    const int n = 4, count = geom::BezierTriangle::point_count(n);
+    std::vector<int> sizes(m.triangles.size(), 3);
+    std::vector<int> indices;
+    for (const auto& t : m.triangles) indices.insert(indices.end(), t.begin(), t.end());
+    Far::TopologyDescriptor desc;
+    desc.numVertices = static_cast<int>(m.positions.size());
+    desc.numFaces = static_cast<int>(m.triangles.size());
+    desc.numVertsPerFace = sizes.data();
+    desc.vertIndicesPerFace = indices.data();
+    Sdc::Options sdc;
+    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+    std::unique_ptr<Far::TopologyRefiner> refiner(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
+        desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(Sdc::SCHEME_LOOP, sdc)));
+    if (!refiner) throw geom::NumericalFailure("loop_quartics: OpenSubdiv rejected the cage topology");
+    Bfr::RefinerSurfaceFactory<> factory(*refiner);
+
+    // Interpolation at the domain points (i,j,k)/n, Bernstein matrix inverted once.
+    std::vector<Eigen::Vector3d> nodes(count);
+    for (int i = n; i >= 0; --i)
+        for (int j = n - i; j >= 0; --j) nodes[geom::BezierTriangle::index(n, i, j)] = Eigen::Vector3d(i, j, n - i - j) / n;
+    Eigen::MatrixXd B(count, count);
+    for (int r = 0; r < count; ++r)
+        for (int i = n; i >= 0; --i)
+            for (int j = n - i; j >= 0; --j) {
+                const int k = n - i - j;
+                double f = 1;  // n! / (i! j! k!)
+                for (int q = 2; q <= n; ++q) f *= q;
+                for (int q = 2; q <= i; ++q) f /= q;
+                for (int q = 2; q <= j; ++q) f /= q;
+                for (int q = 2; q <= k; ++q) f /= q;
+                B(r, geom::BezierTriangle::index(n, i, j)) =
+                    f * std::pow(nodes[r][0], i) * std::pow(nodes[r][1], j) * std::pow(nodes[r][2], k);
+            }
+    const Eigen::MatrixXd Binv = B.inverse();
+    const DomainPattern check = triangle_pattern(8);
+
+    LoopConversion out;
+    out.solid.name = "loop";
+    const double scale = mesh::bounding_box(m).diagonal().norm();
+    Bfr::Surface<double> surface;
+    const Bfr::Surface<double>::PointDescriptor desc3(3);
+    std::vector<double> patch_points;
+    auto limit = [&](const Eigen::Vector3d& uvw) {
+        // Bfr's triangle: corners 0 (0,0), 1 (1,0), 2 (0,1); (u,v,w) = (1-s-t, s, t).
+        const double st[2] = {uvw[1], uvw[2]};
+        Eigen::Vector3d P;
+        surface.Evaluate(st, patch_points.data(), desc3, P.data());
+        return P;
+    };
+    for (int f = 0; f < desc.numFaces; ++f) {
+        if (!factory.InitVertexSurface(f, &surface) || !surface.IsValid())
+            throw geom::NumericalFailure("loop_quartics: no limit surface for face " + std::to_string(f));
+        patch_points.resize(3 * static_cast<std::size_t>(surface.GetNumPatchPoints()));
+        surface.PreparePatchPoints(m.positions[0].data(), desc3, patch_points.data(), desc3);
+        Eigen::MatrixXd values(count, 3);
+        for (int r = 0; r < count; ++r) values.row(r) = limit(nodes[r]).transpose();
+        const Eigen::MatrixXd C = Binv * values;
+        std::vector<Eigen::Vector3d> points(count);
+        for (int r = 0; r < count; ++r) points[r] = C.row(r).transpose();
+        geom::BezierTriangle patch(n, std::move(points));
+        double error = 0;
+        for (const Eigen::Vector3d& t : check.points) error = std::max(error, (patch.evaluate(t) - limit(t)).norm());
+        if (error > kExactRelativeTolerance * scale) ++out.approximated;
+        out.max_error = std::max(out.max_error, error);
+        out.solid.patches.push_back(std::move(patch));
+    }
+    return out;
+#endif
+}
+
+}  // namespace trimkit::tbp

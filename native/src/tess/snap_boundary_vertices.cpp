@@ -1,0 +1,171 @@
+#include "tess/snap_boundary_vertices.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+#include <tuple>
+#include <unordered_map>
+
+#include "mesh/open_edges.h"
+
+namespace trimkit::tess {
+namespace {
+
+struct CellKey {
+    long long x, y, z;
+    bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct CellKeyHash {
+    size_t operator()(const CellKey& k) const {
+        return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+    }
+};
+
+bool position_less(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::tie(a.x(), a.y(), a.z()) < std::tie(b.x(), b.y(), b.z());
+}
+
+Eigen::Vector3d rounded(const Eigen::Vector3d& p, bool as_float) {
+    return as_float ? p.cast<float>().cast<double>() : p;
+}
+
+}  // namespace
+
+std::vector<std::int32_t> position_groups(const mesh::Mesh& mesh, bool as_float) {
+    const auto n = static_cast<std::int32_t>(mesh.positions.size());
+    std::vector<std::int32_t> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::vector<Eigen::Vector3d> p(n);
+    for (std::int32_t i = 0; i < n; ++i) p[i] = rounded(mesh.positions[i], as_float);
+    std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
+        if (p[a] != p[b]) return position_less(p[a], p[b]);
+        return a < b;
+    });
+    std::vector<std::int32_t> group(n);
+    for (std::int32_t k = 0; k < n; ++k)
+        group[order[k]] = k > 0 && p[order[k]] == p[order[k - 1]] ? group[order[k - 1]] : order[k];
+    return group;
+}
+
+std::vector<std::array<std::int32_t, 3>> position_triangles(const mesh::Mesh& mesh,
+                                                            const std::vector<std::int32_t>& group) {
+    std::vector<std::array<std::int32_t, 3>> out(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) out[t][k] = group[mesh.triangles[t][k]];
+    return out;
+}
+
+std::size_t count_position_open_edges(const mesh::Mesh& mesh) {
+    mesh::Mesh topology;
+    topology.positions = mesh.positions;
+    topology.triangles = position_triangles(mesh, position_groups(mesh, true));
+    return mesh::count_open_edges(topology);
+}
+
+std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
+    if (!(tolerance > 0.0) || mesh.positions.empty()) return 0;
+    const std::vector<std::int32_t> group = position_groups(mesh);
+    mesh::Mesh topology;
+    topology.positions = mesh.positions;
+    topology.triangles = position_triangles(mesh, group);
+    const mesh::OpenEdges open = mesh::open_edges(topology);
+    std::vector<std::int32_t> ends;  // position groups on open edges
+    for (const auto& e : open.boundary) ends.push_back(e[0]), ends.push_back(e[1]);
+    std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    if (ends.size() < 2) return 0;
+
+    // Groups sharing a triangle may never meet.
+    std::map<std::int32_t, std::set<std::int32_t>> neighbours;
+    {
+        std::vector<char> is_end(mesh.positions.size(), 0);
+        for (std::int32_t g : ends) is_end[g] = 1;
+        for (const auto& t : topology.triangles)
+            for (int a = 0; a < 3; ++a)
+                if (is_end[t[a]])
+                    for (int b = 0; b < 3; ++b)
+                        if (b != a) neighbours[t[a]].insert(t[b]);
+    }
+
+    // Candidate pairs within the tolerance, closest first (ties by position).
+    const double cell = tolerance;
+    auto key = [&](const Eigen::Vector3d& p) {
+        return CellKey{static_cast<long long>(std::floor(p.x() / cell)),
+                       static_cast<long long>(std::floor(p.y() / cell)),
+                       static_cast<long long>(std::floor(p.z() / cell))};
+    };
+    std::unordered_map<CellKey, std::vector<std::int32_t>, CellKeyHash> grid;
+    for (std::int32_t g : ends) grid[key(mesh.positions[g])].push_back(g);
+    struct Pair {
+        double d;
+        std::int32_t a, b;
+    };
+    std::vector<Pair> pairs;
+    for (std::int32_t g : ends) {
+        const CellKey k = key(mesh.positions[g]);
+        for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dy = -1; dy <= 1; ++dy)
+                for (long long dz = -1; dz <= 1; ++dz) {
+                    const auto it = grid.find({k.x + dx, k.y + dy, k.z + dz});
+                    if (it == grid.end()) continue;
+                    for (std::int32_t h : it->second) {
+                        if (!position_less(mesh.positions[g], mesh.positions[h])) continue;
+                        const double d = (mesh.positions[g] - mesh.positions[h]).norm();
+                        if (d <= tolerance) pairs.push_back({d, g, h});
+                    }
+                }
+    }
+    std::sort(pairs.begin(), pairs.end(), [&](const Pair& x, const Pair& y) {
+        if (x.d != y.d) return x.d < y.d;
+        if (mesh.positions[x.a] != mesh.positions[y.a]) return position_less(mesh.positions[x.a], mesh.positions[y.a]);
+        return position_less(mesh.positions[x.b], mesh.positions[y.b]);
+    });
+
+    // Union of clusters, each with its members, its representative (smallest
+    // position) and the groups its members share triangles with.
+    std::unordered_map<std::int32_t, std::int32_t> parent;
+    std::unordered_map<std::int32_t, std::vector<std::int32_t>> members;
+    std::unordered_map<std::int32_t, std::set<std::int32_t>> blocked;
+    for (std::int32_t g : ends) {
+        parent[g] = g;
+        members[g] = {g};
+        blocked[g] = neighbours[g];
+    }
+    const auto find = [&](std::int32_t g) {
+        while (parent[g] != g) g = parent[g] = parent[parent[g]];
+        return g;
+    };
+    for (const Pair& p : pairs) {
+        std::int32_t ra = find(p.a), rb = find(p.b);
+        if (ra == rb) continue;
+        if (position_less(mesh.positions[rb], mesh.positions[ra])) std::swap(ra, rb);  // ra: the smaller
+        bool ok = true;
+        for (std::int32_t m : members[rb])
+            if (blocked[ra].count(m) || (mesh.positions[m] - mesh.positions[ra]).norm() > tolerance) ok = false;
+        for (std::int32_t m : members[ra])
+            if (blocked[rb].count(m)) ok = false;
+        if (!ok) continue;
+        parent[rb] = ra;
+        members[ra].insert(members[ra].end(), members[rb].begin(), members[rb].end());
+        blocked[ra].insert(blocked[rb].begin(), blocked[rb].end());
+        members.erase(rb);
+        blocked.erase(rb);
+    }
+
+    // Move every vertex of a snapped group onto its cluster's representative.
+    std::size_t moved = 0;
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        const std::int32_t g = group[v];
+        const auto it = parent.find(g);
+        if (it == parent.end()) continue;
+        const std::int32_t r = find(g);
+        if (r == g) continue;
+        mesh.positions[v] = mesh.positions[r];
+        ++moved;
+    }
+    return moved;
+}
+
+}  // namespace trimkit::tess
