@@ -27,6 +27,9 @@ void casteljau_step(std::vector<Eigen::Vector3d>& b, int m, const Eigen::Vector3
 // Parameters within this distance of a degenerate point are moved towards the
 // centre by this much to find a normal (relative to the unit domain).
 constexpr double kNormalNudge = 1e-6;
+// |db/du x db/dv| below this times the squared box diagonal counts as vanishing:
+// rounding leaves ~1e-16 relative; 1e-14 keeps margin and is far below any real patch.
+constexpr double kDegenerateNormalRelative = 1e-14;
 
 }  // namespace
 
@@ -74,8 +77,7 @@ Eigen::Vector3d BezierTriangle::derivative(const Eigen::Vector3d& uvw, const Eig
 
 Eigen::Vector3d BezierTriangle::normal(const Eigen::Vector3d& uvw) const {
     const double scale = bounding_box().diagonal().norm();
-    // Relative size below which db/du x db/dv counts as vanishing.
-    const double tiny = 1e-14 * scale * scale;
+    const double tiny = kDegenerateNormalRelative * scale * scale;
     Eigen::Vector3d p = uvw;
     for (int attempt = 0; attempt < 3; ++attempt) {
         const Eigen::Vector3d c = derivative_u(p).cross(derivative_v(p));

@@ -98,7 +98,8 @@ Containment point_in_solid(const std::vector<TbpHierarchy>& solid, const Eigen::
     const double scale = solid_scale(solid);
     int votes_in = 0, votes_out = 0;
     for (const Eigen::Vector3d& dir : kRayDirections) {
-        RayCast ray{point, dir.normalized(), Eigen::Vector3d::Zero(), 1e-12 * scale,
+        // boxes padded by the on-surface tolerance so rounding cannot hide a touching leaf
+        RayCast ray{point, dir.normalized(), Eigen::Vector3d::Zero(), kOnSurfaceRelativeTolerance * scale,
                     kOnSurfaceRelativeTolerance * scale, s};
         ray.inv_d = ray.d.cwiseInverse();
         for (const TbpHierarchy& h : solid) ray.node(h, 0, 0);
