@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include "mesh/mesh.h"
+#include "mesh/weld_vertices.h"
 #include "numpy_convert.h"
 
 namespace trimkit::bindings {
@@ -90,6 +91,31 @@ void bind_mesh(py::module_& m) {
         .def_property_readonly("triangle_count", &mesh::Mesh::triangle_count);
 
     m.def("surface_area", &mesh::surface_area, py::arg("mesh"), "Sum of the triangles' areas.");
+
+    const mesh::WeldOptions weld;
+    py::class_<mesh::WeldOptions>(m, "WeldOptions", "How weld_map merges vertices (tolerance in model units).")
+        .def(py::init([](double tolerance, bool keep_split_normals, bool keep_split_uvs) {
+                 mesh::WeldOptions o;
+                 o.tolerance = tolerance;
+                 o.keep_split_normals = keep_split_normals;
+                 o.keep_split_uvs = keep_split_uvs;
+                 return o;
+             }),
+             py::arg("tolerance") = weld.tolerance, py::arg("keep_split_normals") = weld.keep_split_normals,
+             py::arg("keep_split_uvs") = weld.keep_split_uvs)
+        .def_readwrite("tolerance", &mesh::WeldOptions::tolerance)
+        .def_readwrite("keep_split_normals", &mesh::WeldOptions::keep_split_normals)
+        .def_readwrite("keep_split_uvs", &mesh::WeldOptions::keep_split_uvs);
+    py::class_<mesh::WeldResult>(m, "WeldResult")
+        .def_property_readonly("vertex_map",
+                               [](const mesh::WeldResult& r) { return to_numpy_1d<std::int32_t>(r.vertex_map); },
+                               "(n,) int32 welded index of every input vertex")
+        .def_readonly("vertex_count", &mesh::WeldResult::vertex_count);
+    m.def("weld_map", &mesh::weld_map, py::arg("mesh"), py::arg("options"),
+          py::call_guard<py::gil_scoped_release>(),
+          "The welded index of every vertex, without changing the mesh (keep per-corner attributes "
+          "by mapping only the corners' vertices). Welded vertices are numbered in order of their "
+          "first input vertex.");
 }
 
 }  // namespace trimkit::bindings

@@ -10,6 +10,7 @@ void bind_geom(py::module_& m);
 void bind_io(py::module_& m);
 void bind_mesh(py::module_& m);
 void bind_tess(py::module_& m);
+void bind_tbp(py::module_& m);
 }  // namespace trimkit::bindings
 
 PYBIND11_MODULE(_trimkit, m) {
@@ -22,4 +23,5 @@ PYBIND11_MODULE(_trimkit, m) {
     trimkit::bindings::bind_mesh(m);
     trimkit::bindings::bind_tess(m);
     trimkit::bindings::bind_io(m);
+    trimkit::bindings::bind_tbp(m);
 }

@@ -81,4 +81,29 @@ void values_from_numpy(const Array& a, py::ssize_t rows, const std::string& what
     for (py::ssize_t i = 0; i < rows; ++i) out[i] = static_cast<T>(view(i));
 }
 
+// (p, k, 3) float64 array from p groups of k points each (all groups of size k).
+inline py::array_t<double> groups_to_numpy(const std::vector<std::vector<Eigen::Vector3d>>& groups, py::ssize_t k) {
+    py::array_t<double> out({static_cast<py::ssize_t>(groups.size()), k, py::ssize_t{3}});
+    auto view = out.mutable_unchecked<3>();
+    for (size_t g = 0; g < groups.size(); ++g)
+        for (py::ssize_t i = 0; i < k; ++i)
+            for (int c = 0; c < 3; ++c) view(g, i, c) = groups[g][i][c];
+    return out;
+}
+
+// Checks a (p, k, 3) array (k = `k`) and returns its p groups of k points;
+// throws ValueError naming `what` and the expected shape.
+inline std::vector<std::vector<Eigen::Vector3d>> groups_from_numpy(const DoubleArray& a, py::ssize_t k,
+                                                                   const std::string& what) {
+    if (a.ndim() != 3 || a.shape(1) != k || a.shape(2) != 3)
+        throw py::value_error(what + ": expected an array of shape (p, " + std::to_string(k) + ", 3)");
+    auto view = a.unchecked<3>();
+    std::vector<std::vector<Eigen::Vector3d>> out(static_cast<size_t>(a.shape(0)));
+    for (py::ssize_t g = 0; g < a.shape(0); ++g) {
+        out[g].resize(static_cast<size_t>(k));
+        for (py::ssize_t i = 0; i < k; ++i) out[g][i] = Eigen::Vector3d(view(g, i, 0), view(g, i, 1), view(g, i, 2));
+    }
+    return out;
+}
+
 }  // namespace trimkit::bindings

@@ -84,16 +84,7 @@ int run_intersect(const std::vector<std::string>& argv) {
     const int levels = count_option(args, "--levels", 2, 0, 8), lod = count_option(args, "--lod", 3, 0, 31);
     const auto start = std::chrono::steady_clock::now();
     const auto ha = tbp::build_hierarchies(a, levels, lod), hb = tbp::build_hierarchies(b, levels, lod);
-    // Segments of every patch pair, linked into components over the whole
-    // solids (a curve crossing patch boundaries is one component).
-    tbp::PatchIntersection all;
-    for (std::size_t i = 0; i < ha.size(); ++i)
-        for (std::size_t j = 0; j < hb.size(); ++j)
-            tbp::intersect_leaves(ha[i], hb[j], !args.flag("--no-hierarchy"), all.segments, all.stats);
-    Eigen::AlignedBox3d box;
-    for (const auto& h : ha) box.extend(h.node(0, 0).box);
-    for (const auto& h : hb) box.extend(h.node(0, 0).box);
-    tbp::build_components(all, tbp::kLinkRelativeTolerance * box.diagonal().norm());
+    const tbp::PatchIntersection all = tbp::intersect_solids(ha, hb, !args.flag("--no-hierarchy"));
     const tbp::IntersectionStats& total = all.stats;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const int components = static_cast<int>(all.components.size()), junctions = static_cast<int>(all.junctions.size());

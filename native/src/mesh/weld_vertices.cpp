@@ -39,6 +39,10 @@ void check_options(const WeldOptions& options) {
         throw geom::InvalidInput("weld_vertices: tolerance = " +
                                  geom::format_value(options.tolerance) +
                                  "; expected a finite distance >= 0");
+    if (!std::isfinite(options.split_uv_distance) || options.split_uv_distance < 0.0)
+        throw geom::InvalidInput("weld_vertices: split_uv_distance = " +
+                                 geom::format_value(options.split_uv_distance) +
+                                 "; expected a finite distance >= 0");
     if (!std::isfinite(options.split_normal_angle) || options.split_normal_angle < 0.0)
         throw geom::InvalidInput("weld_vertices: split_normal_angle = " +
                                  geom::format_value(options.split_normal_angle) +
@@ -114,7 +118,7 @@ std::vector<std::int32_t> representatives(const Mesh& mesh, const WeldOptions& o
                         if (rep[j] != -1) continue;
                         if ((mesh.positions[j] - p).squaredNorm() > tol2) continue;
                         if (split && mesh.normals[j].dot(mesh.normals[r]) < min_cos) continue;
-                        if (split_uvs && mesh.uvs[j] != mesh.uvs[r]) continue;
+                        if (split_uvs && (mesh.uvs[j] - mesh.uvs[r]).norm() > options.split_uv_distance) continue;
                         rep[j] = r;
                     }
                 }

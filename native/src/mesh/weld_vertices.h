@@ -26,6 +26,8 @@ struct WeldOptions {
     // a closed surface's seam, or two CAD faces meeting along an edge, keep each
     // side's own (u,v) (the mesh is then closed by position, not by index).
     bool keep_split_uvs = false;
+    // With keep_split_uvs: uvs at most this far apart (parameter units) count as equal.
+    double split_uv_distance = 0.0;
     // Drop triangles that lose an edge by welding (two equal indices), with their face ids.
     bool remove_degenerate_triangles = true;
 };

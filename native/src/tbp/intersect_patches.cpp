@@ -184,4 +184,16 @@ PatchIntersection intersect_patches(const TbpHierarchy& a, const TbpHierarchy& b
     return result;
 }
 
+PatchIntersection intersect_solids(const std::vector<TbpHierarchy>& a, const std::vector<TbpHierarchy>& b,
+                                   bool use_hierarchy) {
+    PatchIntersection all;
+    for (const TbpHierarchy& ha : a)
+        for (const TbpHierarchy& hb : b) intersect_leaves(ha, hb, use_hierarchy, all.segments, all.stats);
+    Eigen::AlignedBox3d box;
+    for (const TbpHierarchy& h : a) box.extend(h.node(0, 0).box);
+    for (const TbpHierarchy& h : b) box.extend(h.node(0, 0).box);
+    if (!box.isEmpty()) build_components(all, kLinkRelativeTolerance * box.diagonal().norm());
+    return all;
+}
+
 }  // namespace trimkit::tbp

@@ -73,4 +73,12 @@ void intersect_leaves(const TbpHierarchy& a, const TbpHierarchy& b, bool use_hie
 // its own junction is cut there and saved as a closed component.
 void build_components(PatchIntersection& result, double tolerance);
 
+// Intersection of two solids (or any two sets of patches): the segments of
+// every patch pair, linked into components over both sets (a curve crossing
+// patch boundaries is one component) with kLinkRelativeTolerance x the
+// diagonal of all the patches' boxes. Leaf indices in the segments refer to
+// each pair's own hierarchies.
+PatchIntersection intersect_solids(const std::vector<TbpHierarchy>& a, const std::vector<TbpHierarchy>& b,
+                                   bool use_hierarchy = true);
+
 }  // namespace trimkit::tbp

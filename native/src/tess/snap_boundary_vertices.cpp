@@ -77,16 +77,22 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
     ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
     if (ends.size() < 2) return 0;
 
-    // Groups sharing a triangle may never meet.
-    std::map<std::int32_t, std::set<std::int32_t>> neighbours;
+    // Groups sharing a triangle may never meet; nor may two vertices of one face
+    // (a face's own boundary is closed by its triangulation, and folding it onto
+    // itself would fold triangles).
+    std::map<std::int32_t, std::set<std::int32_t>> neighbours, faces;
     {
         std::vector<char> is_end(mesh.positions.size(), 0);
         for (std::int32_t g : ends) is_end[g] = 1;
-        for (const auto& t : topology.triangles)
+        for (std::size_t i = 0; i < topology.triangles.size(); ++i) {
+            const auto& t = topology.triangles[i];
             for (int a = 0; a < 3; ++a)
-                if (is_end[t[a]])
+                if (is_end[t[a]]) {
+                    if (mesh.has_face_ids()) faces[t[a]].insert(mesh.face_ids[i]);
                     for (int b = 0; b < 3; ++b)
                         if (b != a) neighbours[t[a]].insert(t[b]);
+                }
+        }
     }
 
     // Candidate pairs within the tolerance, closest first (ties by position).
@@ -127,11 +133,12 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
     // position) and the groups its members share triangles with.
     std::unordered_map<std::int32_t, std::int32_t> parent;
     std::unordered_map<std::int32_t, std::vector<std::int32_t>> members;
-    std::unordered_map<std::int32_t, std::set<std::int32_t>> blocked;
+    std::unordered_map<std::int32_t, std::set<std::int32_t>> blocked, cluster_faces;
     for (std::int32_t g : ends) {
         parent[g] = g;
         members[g] = {g};
         blocked[g] = neighbours[g];
+        cluster_faces[g] = faces[g];
     }
     const auto find = [&](std::int32_t g) {
         while (parent[g] != g) g = parent[g] = parent[parent[g]];
@@ -146,7 +153,11 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
             if (blocked[ra].count(m) || (mesh.positions[m] - mesh.positions[ra]).norm() > tolerance) ok = false;
         for (std::int32_t m : members[ra])
             if (blocked[rb].count(m)) ok = false;
+        for (std::int32_t f : cluster_faces[rb])
+            if (cluster_faces[ra].count(f)) ok = false;
         if (!ok) continue;
+        cluster_faces[ra].insert(cluster_faces[rb].begin(), cluster_faces[rb].end());
+        cluster_faces.erase(rb);
         parent[rb] = ra;
         members[ra].insert(members[ra].end(), members[rb].begin(), members[rb].end());
         blocked[ra].insert(blocked[rb].begin(), blocked[rb].end());

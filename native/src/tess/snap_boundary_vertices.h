@@ -4,7 +4,8 @@
 // position are one topological vertex (position_groups). Snapping moves vertices of
 // open edges that lie within a tolerance onto one position, under two rules: a vertex
 // moves by at most the tolerance, and no two vertices of one triangle end up at one
-// position, so no triangle degenerates (a plate thinner than the tolerance stays a plate).
+// position, so no triangle degenerates (a plate thinner than the tolerance stays a
+// plate); and (with face ids) no two vertices of one face are snapped together.
 #pragma once
 
 #include <cstddef>

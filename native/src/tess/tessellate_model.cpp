@@ -38,6 +38,9 @@ constexpr double kSharedEdgeWeldShare = 0.1;
 // point: joints of coedges that meet up to rounding (1e-12 apart) would otherwise
 // leave zero-length boundary segments that no face on the other side matches.
 constexpr double kDuplicatePointShare = 1e-6;
+// Vertices of one face at one position whose uvs differ by more than this fraction of
+// the domain diagonal lie on a seam or a pole: they stay separate vertices.
+constexpr double kSplitUvShare = 1e-3;
 // Samples per trim curve and per side of the (u,v) grid for model_diagonal.
 constexpr int kDiagonalCurveSamples = 16, kDiagonalGridSamples = 12;
 
@@ -280,11 +283,15 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
             }
             out.trim_seconds = seconds_since(trim_start);
             out.mesh = tessellate_face(face, polygons, options, f, &out.timings);
-            // Exact duplicates within the face (same position and uv) become one
-            // vertex; faces are never merged by index (each keeps its own uvs).
-            mesh::WeldOptions exact;
-            exact.keep_split_uvs = true;
-            mesh::weld_vertices(out.mesh, exact);
+            // Near-duplicates within the face (a grid crossing 1e-13 from a trim
+            // point) become one vertex, dropping the zero-area slivers between them;
+            // a seam's or a pole's vertices (same position, uvs far apart) stay
+            // split. Faces are never merged by index: each keeps its own uvs.
+            mesh::WeldOptions near;
+            near.tolerance = kDuplicatePointShare * options.tolerance;
+            near.keep_split_uvs = true;
+            near.split_uv_distance = kSplitUvShare * uv_diagonal(face.surface);
+            mesh::weld_vertices(out.mesh, near);
             if (out.mesh.triangle_count() == 0)
                 out.error = "face " + std::to_string(f) + ": no triangles (the trimmed region is empty or degenerate)";
         } catch (const geom::NumericalFailure& e) {

@@ -136,5 +136,26 @@ TEST(BuildComponents, YJunctionAndLoop) {
     EXPECT_EQ(closed, 1);
 }
 
+TEST(IntersectSolids, TiltedSquareThroughCubeIsOneClosedLoopOnTheFaces) {
+    // z = 0.4 + 0.1 x + 0.05 y over [-0.6, 1.7] x [-0.45, 1.55]: crosses the four side faces of the unit cube
+    auto p = [](double x, double y) { return Eigen::Vector3d(x, y, 0.4 + 0.1 * x + 0.05 * y); };
+    TbpSolid square;
+    test::add_quad(square.patches, p(-0.6, -0.45), p(1.7, -0.45), p(1.7, 1.55), p(-0.6, 1.55));
+    const auto hs = build_hierarchies(square, 2, 3), hc = build_hierarchies(test::box_solid(), 2, 3);
+    const PatchIntersection r = intersect_solids(hs, hc);
+    ASSERT_EQ(r.components.size(), 1u);
+    EXPECT_TRUE(r.components[0].closed);
+    EXPECT_TRUE(r.junctions.empty());
+    for (const IntersectionPoint& q : r.components[0].points) {
+        double d = INFINITY;
+        for (int a = 0; a < 3; ++a) d = std::min({d, std::abs(q.position[a]), std::abs(q.position[a] - 1)});
+        EXPECT_LT(d, 1e-9);
+    }
+    const PatchIntersection all = intersect_solids(hs, hc, false);
+    EXPECT_EQ(all.stats.segments, r.stats.segments);
+    EXPECT_LT(r.stats.triangle_tests, all.stats.triangle_tests);
+    EXPECT_EQ(all.components.size(), 1u);
+}
+
 }  // namespace
 }  // namespace trimkit::tbp
