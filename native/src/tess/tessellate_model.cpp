@@ -4,7 +4,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -339,8 +338,8 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
     mesh::Mesh& m = result.mesh;
     if (m.vertex_count() > 0) {
         const double weld_tol = (shared.empty() ? 1.0 : kSharedEdgeWeldShare) * options.tolerance;
-        if (!getenv("TK_NOSNAP")) snap_boundary_vertices(m, weld_tol);
-        if (!getenv("TK_NOTJ")) close_t_junctions(m, weld_tol);
+        snap_boundary_vertices(m, weld_tol);
+        close_t_junctions(m, weld_tol);
         flag_edges(m, options.angle);
         result.open_edges = count_position_open_edges(m);
     }
