@@ -4,7 +4,7 @@
 area ratio within 0.2% of 1, failed faces, open edges, triangles and seconds.
 
 usage: bench/mesh_check_all.py [--folder ../shared/data/cad/iges] [--tolerance 0.001]
-                               [--files a.igs b.igs ...] [--format ply]
+                               [--files a.igs b.igs ...] [--format ply] [--trimkit build/bin/trimkit]
 Tolerance is relative (a fraction of the model's diagonal). Exit status 1 if any file
 breaks the guarantee.
 """
@@ -20,8 +20,8 @@ TRIMKIT = ROOT / "build" / "bin" / "trimkit"
 DAMAGED = {"bad_header.igs", "bug22566_test_Bad.igs"}
 
 
-def run_json(*args):
-    result = subprocess.run([str(TRIMKIT), *args, "--json"], capture_output=True, text=True)
+def run_json(trimkit, *args):
+    result = subprocess.run([str(trimkit), *args, "--json"], capture_output=True, text=True)
     if result.returncode != 0:
         raise RuntimeError(result.stderr.strip())
     return json.loads(result.stdout)
@@ -35,6 +35,7 @@ def main():
     parser.add_argument("--format", default="ply", choices=["ply", "obj", "stl", "glb"])
     parser.add_argument("--mode", default="guaranteed")
     parser.add_argument("--trim-method", default="bezier3d")
+    parser.add_argument("--trimkit", default=str(TRIMKIT), help="the trimkit program to run")
     args = parser.parse_args()
 
     folder = pathlib.Path(args.folder)
@@ -48,9 +49,9 @@ def main():
         for path in files:
             out = pathlib.Path(tmp) / (path.stem + "." + args.format)
             try:
-                m = run_json("mesh", str(path), "-o", str(out), "--relative", "--tolerance",
+                m = run_json(args.trimkit, "mesh", str(path), "-o", str(out), "--relative", "--tolerance",
                              str(args.tolerance), "--mode", args.mode, "--trim-method", args.trim_method)
-                c = run_json("check", str(path), str(out))
+                c = run_json(args.trimkit, "check", str(path), str(out))
             except RuntimeError as err:
                 verdict = "rejected (damaged on purpose)" if path.name in DAMAGED else "ERROR"
                 bad += verdict == "ERROR"

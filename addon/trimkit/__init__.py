@@ -1,11 +1,13 @@
-"""trimkit: import CAD (IGES, STEP) as meshes within a tolerance of the exact surfaces."""
+"""trimkit: import CAD (IGES, STEP) as meshes within a tolerance of the exact surfaces, and
+solids of triangular Bézier patches (TBP) at any level of detail, trimmed against each other."""
 
 bl_info = {
     "name": "trimkit CAD import",
     "author": "trimkit",
     "version": (0, 1, 0),
     "blender": (3, 4, 0),
-    "location": "File > Import > IGES [trimkit]; Properties > Object > trimkit",
+    "location": "File > Import > IGES / TBP [trimkit]; Object > Mesh to TBP Solid, Trim by TBP Solid; "
+                "Properties > Object > trimkit",
     "description": "Trimmed NURBS to meshes with a guaranteed tolerance; re-mesh from the stored geometry",
     "category": "Import-Export",
 }

@@ -7,7 +7,7 @@ import pathlib
 
 import bpy
 
-from . import blender_mesh, io, stored_source
+from . import blender_mesh, io, stored_source, tbp_objects
 
 
 @dataclasses.dataclass
@@ -107,7 +107,14 @@ def object_tolerance(props, render=False):
 def retessellate(objects, render=False, progress=None):
     """Re-meshes trimkit objects from their stored geometry with their own settings
     (the render tolerance when `render`). Objects sharing a source and settings
-    are meshed together. Returns the io.Tessellation of each group."""
+    are meshed together. Returns the io.Tessellation of each group. TBP objects
+    re-mesh at their levels/lod (tbp_objects.remesh; no render detail)."""
+    tbp = [o for o in objects if o.trimkit.kind != 'CAD']
+    objects = [o for o in objects if o.trimkit.kind == 'CAD']
+    for k, obj in enumerate(tbp if not render else []):
+        tbp_objects.remesh(obj)
+        if progress:
+            progress((k + 1) / (len(tbp) + len(objects)))
     groups = {}
     for obj in objects:
         p = obj.trimkit

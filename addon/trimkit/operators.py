@@ -1,13 +1,14 @@
-"""Operators: File > Import > IGES (and STEP when the module has it), and
-re-meshing selected trimkit objects. Each gathers its properties and delegates
-to importer.py."""
+"""Operators: File > Import > IGES (and STEP when the module has it) and TBP,
+re-meshing selected trimkit objects, a closed mesh to a TBP solid, and trimming
+one TBP object by another. Each gathers its properties and delegates to
+importer.py or tbp_objects.py."""
 import math
 
 import bpy
-from bpy.props import BoolProperty, EnumProperty, FloatProperty, StringProperty
+from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
 from bpy_extras.io_utils import ImportHelper
 
-from . import importer, io, properties
+from . import importer, io, properties, tbp_objects
 
 SPLIT_ITEMS = [
     ('BODY', "Per Body", "One object per body (solid or shell); faces in no body together"),
@@ -132,15 +133,130 @@ class OBJECT_OT_trimkit_retessellate(bpy.types.Operator):
         return {'FINISHED'}
 
 
+def levels_property(default=2):
+    return IntProperty(name="Levels", default=default, min=0, soft_max=4,
+                       description="Hierarchy levels L: (lod+1)^L segments per patch edge")
+
+
+def lod_property(default=1):
+    return IntProperty(name="LOD", default=default, min=0, soft_max=7,
+                       description="Subdivisions per level K: each node splits into (K+1)^2 subpatches")
+
+
+def run_tbp(operator, context, work):
+    """Runs work(progress) with a progress bar; errors are reported and give {'CANCELLED'}."""
+    wm = context.window_manager
+    wm.progress_begin(0.0, 1.0)
+    try:
+        return work(wm.progress_update)
+    except (RuntimeError, ValueError, OSError, ImportError) as err:
+        operator.report({'ERROR'}, str(err))
+        return None
+    finally:
+        wm.progress_end()
+
+
+class IMPORT_SCENE_OT_trimkit_tbp(bpy.types.Operator, ImportHelper):
+    """Import a solid of triangular Bézier patches (.tbp) as a mesh at a level of detail; the solid is kept in the .blend"""
+    bl_idname = "import_scene.trimkit_tbp"
+    bl_label = "Import TBP (trimkit)"
+    bl_options = {'REGISTER', 'UNDO'}
+    filename_ext = ".tbp"
+    filter_glob: StringProperty(default="*.tbp", options={'HIDDEN'})
+    levels: levels_property()
+    lod: lod_property()
+
+    def execute(self, context):
+        def work(progress):
+            progress(0.1)
+            return tbp_objects.import_tbp(context, self.filepath, self.levels, self.lod)
+        done = run_tbp(self, context, work)
+        if done is None:
+            return {'CANCELLED'}
+        obj, meshing = done
+        self.report({'INFO'}, f"{obj.name}: {meshing.patches} patches, {meshing.triangles} triangles, "
+                              f"{meshing.open_edges} open edges in {meshing.seconds:.2f} s")
+        return {'FINISHED'}
+
+
+class OBJECT_OT_trimkit_mesh_to_tbp(bpy.types.Operator):
+    """Make a TBP solid (cubic PN triangles) from the active closed mesh, as a new object"""
+    bl_idname = "object.trimkit_mesh_to_tbp"
+    bl_label = "Mesh to TBP Solid"
+    bl_options = {'REGISTER', 'UNDO'}
+    levels: levels_property(1)
+    lod: lod_property(1)
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        return obj is not None and obj.type == 'MESH'
+
+    def execute(self, context):
+        source = context.active_object
+
+        def work(progress):
+            progress(0.1)
+            return tbp_objects.mesh_to_tbp(context, source, self.levels, self.lod)
+        done = run_tbp(self, context, work)
+        if done is None:
+            return {'CANCELLED'}
+        obj, meshing = done
+        self.report({'INFO'}, f"{obj.name}: {meshing.patches} PN patches, {meshing.triangles} triangles")
+        return {'FINISHED'}
+
+
+class OBJECT_OT_trimkit_trim(bpy.types.Operator):
+    """Trim the active TBP object by the other selected TBP solid; the result is a new object and the active one is hidden"""
+    bl_idname = "object.trimkit_trim"
+    bl_label = "Trim by TBP Solid"
+    bl_options = {'REGISTER', 'UNDO'}
+    keep: EnumProperty(name="Keep", items=properties.KEEP_ITEMS, default='outside')
+    levels: levels_property(2)
+    lod: lod_property(3)
+
+    @staticmethod
+    def tool(context):
+        tools = [o for o in context.selected_objects if o != context.active_object and tbp_objects.is_tbp(o)]
+        return tools[0] if len(tools) == 1 else None
+
+    @classmethod
+    def poll(cls, context):
+        return tbp_objects.is_tbp(context.active_object) and cls.tool(context) is not None
+
+    def execute(self, context):
+        target, tool = context.active_object, self.tool(context)
+
+        def work(progress):
+            progress(0.1)
+            return tbp_objects.trim(context, target, tool, self.keep, self.levels, self.lod)
+        done = run_tbp(self, context, work)
+        if done is None:
+            return {'CANCELLED'}
+        obj, result = done
+        self.report({'INFO'}, f"{obj.name}: {result.triangles} triangles, area {result.area:.6g}, "
+                              f"{result.boundary_loops} boundary loops, {result.triangle_tests} triangle tests "
+                              f"in {result.seconds:.2f} s")
+        return {'FINISHED'}
+
+
 def menu_import(self, context):
     self.layout.operator(IMPORT_SCENE_OT_trimkit_iges.bl_idname, text="IGES (.igs, .iges) [trimkit]")
     if io.has_step():
         self.layout.operator(IMPORT_SCENE_OT_trimkit_step.bl_idname, text="STEP (.stp, .step) [trimkit]")
+    self.layout.operator(IMPORT_SCENE_OT_trimkit_tbp.bl_idname, text="TBP (.tbp) [trimkit]")
+
+
+def menu_object(self, context):
+    self.layout.separator()
+    self.layout.operator(OBJECT_OT_trimkit_mesh_to_tbp.bl_idname)
+    self.layout.operator(OBJECT_OT_trimkit_trim.bl_idname)
 
 
 def classes():
     """The operator classes to register: STEP only when _trimkit can read it."""
-    found = [IMPORT_SCENE_OT_trimkit_iges, OBJECT_OT_trimkit_retessellate]
+    found = [IMPORT_SCENE_OT_trimkit_iges, OBJECT_OT_trimkit_retessellate, IMPORT_SCENE_OT_trimkit_tbp,
+             OBJECT_OT_trimkit_mesh_to_tbp, OBJECT_OT_trimkit_trim]
     if io.has_step():
         found.insert(1, IMPORT_SCENE_OT_trimkit_step)
     return found
@@ -150,9 +266,11 @@ def register():
     for cls in classes():
         bpy.utils.register_class(cls)
     bpy.types.TOPBAR_MT_file_import.append(menu_import)
+    bpy.types.VIEW3D_MT_object.append(menu_object)
 
 
 def unregister():
+    bpy.types.VIEW3D_MT_object.remove(menu_object)
     bpy.types.TOPBAR_MT_file_import.remove(menu_import)
     for cls in reversed(classes()):
         bpy.utils.unregister_class(cls)

@@ -18,6 +18,9 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
         props = context.object.trimkit
         layout = self.layout
         layout.use_property_split = True
+        if props.kind != 'CAD':
+            self.draw_tbp(props, layout)
+            return
         layout.label(text=f"{props.source_name} ({props.part.lower()} {props.part_index})", icon='FILE')
         col = layout.column()
         col.prop(props, "relative")
@@ -34,6 +37,23 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
         if props.failed_faces:
             box.label(text=f"{props.failed_faces} failed faces", icon='ERROR')
             box.label(text=props.failed_report[:120])
+
+    @staticmethod
+    def draw_tbp(props, layout):
+        if props.kind == 'TBP_TRIM':
+            layout.label(text=f"{props.source_name} trimmed by {props.tool_name}", icon='MOD_BOOLEAN')
+        else:
+            layout.label(text=f"{props.source_name} (TBP solid)", icon='FILE')
+        col = layout.column()
+        col.prop(props, "tbp_levels")
+        col.prop(props, "tbp_lod")
+        if props.kind == 'TBP_TRIM':
+            col.prop(props, "keep")
+        col.prop(props, "smooth")
+        col.prop(props, "exact_normals")
+        layout.operator("object.trimkit_retessellate", text="Re-mesh", icon='FILE_REFRESH')
+        box = layout.box()
+        box.label(text=f"{props.faces} patches, {props.triangles} triangles, {props.seconds:.2f} s")
 
 
 def register():

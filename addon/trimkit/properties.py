@@ -2,8 +2,8 @@
 import math
 
 import bpy
-from bpy.props import (BoolProperty, EnumProperty, FloatProperty, IntProperty, PointerProperty,
-                       StringProperty)
+from bpy.props import (BoolProperty, EnumProperty, FloatProperty, FloatVectorProperty, IntProperty,
+                       PointerProperty, StringProperty)
 
 MODE_ITEMS = [
     ('guaranteed', "Guaranteed", "Every mesh point within the tolerance of the exact surface (conservative bound)"),
@@ -13,6 +13,15 @@ TRIM_ITEMS = [
     ('bezier3d', "Bézier 3D", "Trim curves lifted to 3D Bézier curves, line-distance bound"),
     ('yang', "Yang", "Trim curve step length from derivative bounds"),
     ('param', "Parameter", "Chords in parameter space (baseline, no 3D guarantee)"),
+]
+KIND_ITEMS = [
+    ('CAD', "CAD", "Meshed from a CAD file (IGES, STEP)"),
+    ('TBP', "TBP Solid", "Polygonized from a solid of triangular Bézier patches"),
+    ('TBP_TRIM', "Trimmed TBP", "A TBP solid's patches trimmed against another TBP solid"),
+]
+KEEP_ITEMS = [
+    ('outside', "Outside", "Keep the part of the patches outside the tool solid"),
+    ('inside', "Inside", "Keep the part of the patches inside the tool solid"),
 ]
 PART_ITEMS = [
     ('MODEL', "Model", "All faces (or the faces in no body)"),
@@ -35,6 +44,17 @@ class TRIMKIT_PG_object(bpy.types.PropertyGroup):
     source: PointerProperty(type=bpy.types.Text, name="Source",
                             description="Text datablock holding the CAD file (compressed) this mesh was made from")
     source_name: StringProperty(name="File", description="Name of the CAD file")
+    kind: EnumProperty(name="Kind", items=KIND_ITEMS, default='CAD')
+    tbp_levels: IntProperty(name="Levels", default=2, min=0, soft_max=4,
+                            description="TBP hierarchy levels L: (lod+1)^L segments per patch edge")
+    tbp_lod: IntProperty(name="LOD", default=1, min=0, soft_max=7,
+                         description="TBP subdivisions per level K: each node splits into (K+1)^2 subpatches")
+    keep: EnumProperty(name="Keep", items=KEEP_ITEMS, default='outside')
+    tool_source: PointerProperty(type=bpy.types.Text, name="Tool",
+                                 description="Text datablock holding the tool solid (.tbp) of a trimmed TBP")
+    tool_name: StringProperty(name="Tool Name", description="Name of the tool object when trimmed")
+    tool_matrix: FloatVectorProperty(name="Tool Matrix", size=16, default=[float(i % 5 == 0) for i in range(16)],
+                                     description="Tool coordinates to this object's, row-major 4x4")
     part: EnumProperty(name="Part", items=PART_ITEMS, default='MODEL')
     part_index: IntProperty(name="Part Index", default=-1)
     scale: FloatProperty(name="Scale", description="Model units to Blender units", default=1.0, min=0.0)

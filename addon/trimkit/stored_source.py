@@ -1,4 +1,4 @@
-"""The exact geometry inside the .blend: a CAD file's bytes, zlib-compressed, in an
+"""The exact geometry inside the .blend: a CAD file's (or a .tbp solid's) bytes, zlib-compressed, in an
 ID property of a Text datablock that objects point to (Object.trimkit.source).
 The Text's body only describes it; it survives save, reload and moving the file.
 """
@@ -15,7 +15,7 @@ def store(name, data):
     text[KEY] = io.compress(data)
     text["trimkit_file"] = name
     text.use_fake_user = True
-    text.write(f"trimkit: the CAD file {name} ({len(data)} bytes, zlib-compressed) is stored in\n"
+    text.write(f"trimkit: the file {name} ({len(data)} bytes, zlib-compressed) is stored in\n"
                f"this datablock's custom property '{KEY}'. Objects re-mesh from it.\n")
     return text
 

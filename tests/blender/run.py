@@ -197,6 +197,189 @@ def test_damaged_file_reports_error_and_leaves_scene_unchanged():
     print(f"    damaged file: {message.strip().splitlines()[-1]}")
 
 
+# -- TBP solids ---------------------------------------------------------------
+
+TBP_SLOPE = math.sqrt(1 + 0.1 ** 2 + 0.05 ** 2)
+# The tilted square over [-2, 2]^2 (2 patches) trimmed by Blender's default UV sphere made
+# PN triangles (960 patches), levels 2, lod 3, keep outside: welded, slivers dropped.
+TBP_TRIM_TRIANGLES = 1539
+
+
+def tbp_flat(a, b, c, n=3):
+    return [[(i * a[t] + j * b[t] + (n - i - j) * c[t]) / n for t in range(3)]
+            for i in range(n, -1, -1) for j in range(n - i, -1, -1)]
+
+
+def tbp_quads(*quads):
+    out = []
+    for p0, p1, p2, p3 in quads:
+        out += [tbp_flat(p0, p1, p2), tbp_flat(p0, p2, p3)]
+    return out
+
+
+def write_tbp(name, patches, solid_name=""):
+    import json
+    path = TMP / name
+    path.write_text(json.dumps({"tbp": 1, "degree": 3, "name": solid_name, "patches": patches}))
+    return path
+
+
+def tbp_cube_file():
+    v = lambda x, y, z: (float(x), float(y), float(z))
+    return write_tbp("cube.tbp", tbp_quads(
+        (v(0, 0, 0), v(0, 1, 0), v(1, 1, 0), v(1, 0, 0)), (v(0, 0, 1), v(1, 0, 1), v(1, 1, 1), v(0, 1, 1)),
+        (v(0, 0, 0), v(1, 0, 0), v(1, 0, 1), v(0, 0, 1)), (v(0, 1, 0), v(0, 1, 1), v(1, 1, 1), v(1, 1, 0)),
+        (v(0, 0, 0), v(0, 0, 1), v(0, 1, 1), v(0, 1, 0)), (v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1))), "cube")
+
+
+def tbp_square_file(half=2.0):
+    """The tilted square z = 0.4 + 0.1 x + 0.05 y over [-half, half]^2 as two flat cubic TBPs."""
+    p = lambda x, y: (x, y, 0.4 + 0.1 * x + 0.05 * y)
+    return write_tbp("square.tbp", tbp_quads((p(-half, -half), p(half, -half), p(half, half), p(-half, half))),
+                     "square")
+
+
+def import_tbp(path, levels, lod):
+    before = set(bpy.data.objects)
+    assert bpy.ops.import_scene.trimkit_tbp(filepath=str(path), levels=levels, lod=lod) == {'FINISHED'}
+    new = [o for o in bpy.data.objects if o not in before]
+    assert len(new) == 1
+    return new[0]
+
+
+def is_closed(obj):
+    import bmesh
+    bm = bmesh.new()
+    bm.from_mesh(obj.data)
+    try:
+        return all(len(e.link_faces) == 2 for e in bm.edges)
+    finally:
+        bm.free()
+
+
+def mesh_area(obj):
+    return sum(p.area for p in obj.data.polygons)
+
+
+def scene_counts():
+    return (len(bpy.data.objects), len(bpy.data.meshes), len(bpy.data.texts))
+
+
+def expect_cancelled(operator, **options):
+    try:
+        result = operator(**options)
+    except RuntimeError as err:  # bpy.ops raises on an ERROR report
+        return str(err)
+    assert result == {'CANCELLED'}, result
+    return ""
+
+
+def test_tbp_cube_imports_closed_with_the_patches_stored():
+    empty_scene()
+    cube = import_tbp(tbp_cube_file(), 2, 1)
+    assert cube.name == "cube" and cube.trimkit.kind == 'TBP'
+    assert len(cube.data.polygons) == 12 * 16 == cube.trimkit.triangles, len(cube.data.polygons)
+    assert is_closed(cube), "cube mesh has open edges"
+    assert abs(mesh_area(cube) - 6.0) < 1e-5
+    assert cube.trimkit.source is not None and cube.trimkit.faces == 12
+    assert cube.data.has_custom_normals and "UVMap" in cube.data.uv_layers
+    assert sum(e.use_edge_sharp for e in cube.data.edges) == 12 * 4
+    print(f"    TBP cube: {len(cube.data.polygons)} triangles, closed, area {mesh_area(cube):.6f}")
+
+
+def test_tbp_uv_sphere_to_tbp_trims_a_square():
+    empty_scene()
+    bpy.ops.mesh.primitive_uv_sphere_add(radius=1.0)
+    sphere = bpy.context.active_object
+    assert len(sphere.data.polygons) == 32 * 16
+    assert bpy.ops.object.trimkit_mesh_to_tbp(levels=1, lod=1) == {'FINISHED'}
+    tool = bpy.context.active_object
+    assert tool != sphere and tool.trimkit.kind == 'TBP' and tool.trimkit.faces == 960
+    assert len(tool.data.polygons) == 960 * 4 and is_closed(tool)
+    square = import_tbp(tbp_square_file(), 2, 3)
+    untrimmed = mesh_area(square)
+    assert len(square.data.polygons) == 2 * 256 and abs(untrimmed - 16 * TBP_SLOPE) < 1e-4
+    select_only([square, tool])
+    start = time.perf_counter()
+    assert bpy.ops.object.trimkit_trim(keep='outside', levels=2, lod=3) == {'FINISHED'}
+    seconds = time.perf_counter() - start
+    trimmed = bpy.context.active_object
+    assert trimmed.name == "square trimmed" and trimmed.trimkit.kind == 'TBP_TRIM'
+    assert square.hide_get() and not tool.hide_get()
+    area = mesh_area(trimmed)
+    d = 0.4 / TBP_SLOPE  # the section of the unit sphere by the plane: pi (1 - d^2)
+    hole = untrimmed - area
+    assert 0.8 * math.pi * (1 - d * d) < hole < 1.1 * math.pi * (1 - d * d), (untrimmed, area)
+    count = len(trimmed.data.polygons)
+    assert count == TBP_TRIM_TRIANGLES, count
+    select_only([square, tool])
+    assert bpy.ops.object.trimkit_trim(keep='inside', levels=2, lod=3) == {'FINISHED'}
+    inside = bpy.context.active_object
+    assert abs(mesh_area(inside) + area - untrimmed) < 0.05 * hole, (mesh_area(inside), area, untrimmed)
+    print(f"    UV sphere -> {tool.trimkit.faces} PN patches; square {len(square.data.polygons)} triangles, "
+          f"area {untrimmed:.5f} -> trimmed {count} triangles, area {area:.5f} (inside {mesh_area(inside):.5f}), "
+          f"{seconds:.2f} s")
+
+
+def test_tbp_errors_cancel_and_leave_the_scene_unchanged():
+    empty_scene()
+    bpy.ops.mesh.primitive_plane_add()
+    counts = scene_counts()
+    message = expect_cancelled(bpy.ops.object.trimkit_mesh_to_tbp)
+    assert "not closed" in message, message
+    assert scene_counts() == counts
+    broken = TMP / "broken.tbp"
+    broken.write_text('{"tbp": 1, "degree": 3, "patches": [[[0, 0, 0]]]}')
+    message = expect_cancelled(bpy.ops.import_scene.trimkit_tbp, filepath=str(broken))
+    assert "broken.tbp" in message, message
+    assert scene_counts() == counts
+    cube = import_tbp(tbp_cube_file(), 1, 1)
+    far = import_tbp(tbp_square_file(0.2), 1, 1)
+    far.location = (5.0, 0.0, 0.0)
+    bpy.context.view_layer.update()
+    counts = scene_counts()
+    select_only([far, cube])
+    message = expect_cancelled(bpy.ops.object.trimkit_trim, keep='inside')
+    assert "nothing" in message, message
+    assert scene_counts() == counts and not far.hide_get()
+    print(f"    errors: {message.strip().splitlines()[-1]}")
+
+
+def test_tbp_saved_blend_remeshes_at_another_level():
+    empty_scene()
+    cube = import_tbp(tbp_cube_file(), 1, 1)
+    square = import_tbp(tbp_square_file(1.0), 1, 1)
+    square.location = (0.5, 0.5, 0.0)  # centred on the cube's axis: the cube cuts a hole in the middle
+    bpy.context.view_layer.update()
+    select_only([square, cube])
+    assert bpy.ops.object.trimkit_trim(keep='outside', levels=1, lod=3) == {'FINISHED'}
+    saved = TMP / "tbp" / "scene.blend"
+    saved.parent.mkdir(parents=True, exist_ok=True)
+    assert bpy.ops.wm.save_as_mainfile(filepath=str(saved)) == {'FINISHED'}
+    for path in TMP.glob("*.tbp"):
+        path.unlink()  # only the .blend holds the solids
+    bpy.ops.wm.open_mainfile(filepath=str(saved))
+    cube = bpy.data.objects["cube"]
+    trimmed = bpy.data.objects["square trimmed"]
+    assert len(cube.data.polygons) == 12 * 4 and is_closed(cube)
+    first = len(trimmed.data.polygons)
+    area = mesh_area(trimmed)
+    for obj, levels, lod in ((cube, 3, 1), (trimmed, 2, 3)):
+        obj.trimkit.tbp_levels, obj.trimkit.tbp_lod = levels, lod
+    select_only([cube, trimmed])
+    assert bpy.ops.object.trimkit_retessellate() == {'FINISHED'}
+    assert len(cube.data.polygons) == 12 * 64 and is_closed(cube)
+    assert abs(mesh_area(cube) - 6.0) < 1e-5
+    finer = len(trimmed.data.polygons)
+    assert finer > first, (first, finer)
+    # world: the square over [-0.5, 1.5]^2 minus the cube's section over [0, 1]^2 (the plane is tilted by TBP_SLOPE)
+    expected = (4.0 - 1.0) * TBP_SLOPE
+    assert abs(mesh_area(trimmed) - expected) < 1e-5 * expected, (mesh_area(trimmed), expected)
+    assert trimmed.trimkit.triangles == finer and trimmed.trimkit.kind == 'TBP_TRIM'
+    print(f"    after reload: cube 48 -> {len(cube.data.polygons)} triangles; trimmed square {first} -> {finer} "
+          f"triangles, area {area:.6f} -> {mesh_area(trimmed):.6f} (expected {expected:.6f})")
+
+
 def run_batch(*args):
     batch = pathlib.Path(bpy.utils.user_resource('SCRIPTS', path="addons")) / "trimkit" / "batch.py"
     command = [bpy.app.binary_path, "-b", "--factory-startup", "-P", str(batch), "--", *map(str, args)]
