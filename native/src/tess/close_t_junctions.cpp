@@ -15,6 +15,9 @@ namespace {
 // Passes over the open edges; each pass splits every triangle at most once, and a
 // T-junction needs at most one split per triangle side.
 constexpr int kMaxPasses = 4;
+// Vertices closer than this share of the distance to an end of the edge are not
+// split in (they are that end up to rounding).
+constexpr double kMinSplitShare = 1e-6;
 
 struct CellKey {
     long long x, y, z;
@@ -91,7 +94,13 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
                             const double t = (p - a).dot(ab) / len2;
                             if (!(t > 0.0 && t < 1.0)) continue;
                             if ((a + t * ab - p).norm() > distance) continue;
-                            if ((p - a).norm() <= distance || (p - b).norm() <= distance) continue;
+                            // A vertex near an end is split in too: the snap left it
+                            // there (it could not join the end: one face holds both, a
+                            // grid crossing next to a trim vertex), so only splitting
+                            // the other face's edge closes the crack.
+                            if (!((p - a).norm() > kMinSplitShare * distance) ||
+                                !((p - b).norm() > kMinSplitShare * distance))
+                                continue;
                             on_edge.emplace_back(t, v);
                         }
                     }

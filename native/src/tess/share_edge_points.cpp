@@ -69,6 +69,32 @@ SharedEdgePolyline share_edge_points(const geom::NurbsSurface& S, const geom::Co
         gs[k] = G.point(ts[k]);
     }
 
+    // The edge's points must run along the coedge's curve from ta to tb. A file may
+    // give a coedge whose curve runs against its edge-reversal flag: the points then
+    // run from tb to ta, and mapping them monotonically from ta would pile them at
+    // one end (one uv at two positions far apart). The orientation is read from the
+    // ends, or (a closed edge, whose ends coincide) from interior points' nearest
+    // samples.
+    {
+        const double fwd = (X.front() - gs[0]).norm() + (X.back() - gs[m]).norm();
+        const double rev = (X.front() - gs[m]).norm() + (X.back() - gs[0]).norm();
+        bool flip = rev < 0.5 * fwd;
+        if (!flip && !(fwd < 0.5 * rev) && n >= 5) {
+            const auto nearest = [&](const Eigen::Vector3d& x) {
+                int best = 0;
+                double best_d = INFINITY;
+                for (int k = 0; k <= m; ++k) {
+                    const double d = (gs[k] - x).squaredNorm();
+                    if (d < best_d) best_d = d, best = k;
+                }
+                return best;
+            };
+            const int k1 = nearest(X[n / 3]), k2 = nearest(X[(2 * n) / 3]);
+            flip = k1 > k2;
+        }
+        if (flip) std::reverse(X.begin(), X.end());
+    }
+
     SharedEdgePolyline result;
     result.polyline.edge = coedge.edge;
     double t_prev = ta;

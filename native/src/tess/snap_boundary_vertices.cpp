@@ -8,6 +8,8 @@
 #include <tuple>
 #include <unordered_map>
 
+#include <Eigen/Geometry>
+
 #include "mesh/open_edges.h"
 
 namespace trimkit::tess {
@@ -81,19 +83,54 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
     // (a face's own boundary is closed by its triangulation, and folding it onto
     // itself would fold triangles).
     std::map<std::int32_t, std::set<std::int32_t>> neighbours, faces;
+    // Exception: a closed surface's seam. One face's two vertices on either side of
+    // its seam lie at (nearly) one position with uvs far apart (a period); they are
+    // meant to be one point, and joining them folds nothing. Each end group's uvs per
+    // face, and each face's uv extent, tell them apart.
+    std::map<std::pair<std::int32_t, std::int32_t>, std::vector<Eigen::Vector2d>> face_uvs;
+    std::unordered_map<std::int32_t, Eigen::AlignedBox2d> uv_box;
     {
         std::vector<char> is_end(mesh.positions.size(), 0);
         for (std::int32_t g : ends) is_end[g] = 1;
+        const bool with_uvs = mesh.has_face_ids() && mesh.has_uvs();
         for (std::size_t i = 0; i < topology.triangles.size(); ++i) {
             const auto& t = topology.triangles[i];
-            for (int a = 0; a < 3; ++a)
+            for (int a = 0; a < 3; ++a) {
+                if (with_uvs) uv_box[mesh.face_ids[i]].extend(mesh.uvs[mesh.triangles[i][a]]);
                 if (is_end[t[a]]) {
                     if (mesh.has_face_ids()) faces[t[a]].insert(mesh.face_ids[i]);
+                    if (with_uvs) face_uvs[{t[a], mesh.face_ids[i]}].push_back(mesh.uvs[mesh.triangles[i][a]]);
                     for (int b = 0; b < 3; ++b)
                         if (b != a) neighbours[t[a]].insert(t[b]);
                 }
+            }
         }
     }
+    // Members of two clusters may share face f when every pair of their uvs in f lies
+    // at least this share of the face's uv extent apart (a seam).
+    constexpr double kSeamUvShare = 0.25;
+    const auto across_seam = [&](const std::vector<std::int32_t>& xs, const std::vector<std::int32_t>& ys,
+                                 std::int32_t f) {
+        const auto box = uv_box.find(f);
+        if (box == uv_box.end()) return false;
+        const double span = kSeamUvShare * box->second.sizes().maxCoeff();
+        if (!(span > 0.0)) return false;
+        bool any = false;
+        for (std::int32_t x : xs) {
+            const auto ux = face_uvs.find({x, f});
+            if (ux == face_uvs.end()) continue;
+            for (std::int32_t y : ys) {
+                const auto uy = face_uvs.find({y, f});
+                if (uy == face_uvs.end()) continue;
+                for (const Eigen::Vector2d& a : ux->second)
+                    for (const Eigen::Vector2d& b : uy->second) {
+                        if ((a - b).norm() < span) return false;
+                        any = true;
+                    }
+            }
+        }
+        return any;
+    };
 
     // Candidate pairs within the tolerance, closest first (ties by position).
     const double cell = tolerance;
@@ -154,7 +191,7 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
         for (std::int32_t m : members[ra])
             if (blocked[rb].count(m)) ok = false;
         for (std::int32_t f : cluster_faces[rb])
-            if (cluster_faces[ra].count(f)) ok = false;
+            if (ok && cluster_faces[ra].count(f) && !across_seam(members[ra], members[rb], f)) ok = false;
         if (!ok) continue;
         cluster_faces[ra].insert(cluster_faces[rb].begin(), cluster_faces[rb].end());
         cluster_faces.erase(rb);

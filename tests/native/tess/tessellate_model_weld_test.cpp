@@ -142,6 +142,47 @@ TEST(TessellateModelWeld, ThinPlateKeepsEveryFace) {
     EXPECT_EQ(r.open_edges, 0u);
 }
 
+// Open edges of the mesh as written (float positions), vertices joined by exact
+// position through an ordered map.
+std::size_t open_edges_by_float_position(const mesh::Mesh& m) {
+    std::map<std::tuple<float, float, float>, std::int32_t> id;
+    mesh::Mesh topology;
+    for (const auto& p : m.positions) {
+        const auto key = std::make_tuple(float(p.x()), float(p.y()), float(p.z()));
+        if (!id.count(key)) {
+            id.emplace(key, static_cast<std::int32_t>(topology.positions.size()));
+            topology.positions.push_back(p);
+        }
+    }
+    for (const auto& t : m.triangles) {
+        std::array<std::int32_t, 3> u{};
+        for (int k = 0; k < 3; ++k)
+            u[k] = id.at(std::make_tuple(float(m.positions[t[k]].x()), float(m.positions[t[k]].y()),
+                                         float(m.positions[t[k]].z())));
+        topology.triangles.push_back(u);
+    }
+    return mesh::count_open_edges(topology);
+}
+
+// Issue 3 watertightness: a B-rep solid whose shared edges were mapped onto the
+// second face's pcurve out of order (occ22470), a cone whose own seam vertices stay
+// apart (OCC8842_cone_CATIA), grid crossings next to trim vertices that leave
+// T-junctions inside the snap distance (occ22470, OCC17026-1).
+class ClosedAfterWeld : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ClosedAfterWeld, NoOpenEdges) {
+    TRIMKIT_CAD_SAMPLE(path, std::string("iges/") + GetParam());
+    const geom::Model model = io::read_model(path);
+    TessellationOptions options;
+    options.tolerance = kRelativeTolerance * model_diagonal(model);
+    const TessellationResult r = tessellate_model(model, options);
+    EXPECT_TRUE(r.failed_faces.empty());
+    EXPECT_EQ(open_edges_by_float_position(r.mesh), 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Issue3, ClosedAfterWeld,
+                         ::testing::Values("occ22470.igs", "OCC8842_cone_CATIA.igs", "OCC17026-1.igs"));
+
 class DeviationWithinTolerance : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(DeviationWithinTolerance, BothDirections) {
@@ -163,7 +204,7 @@ TEST_P(DeviationWithinTolerance, BothDirections) {
 INSTANTIATE_TEST_SUITE_P(Issue3, DeviationWithinTolerance,
                          ::testing::Values("OCC8842_cylinder_Ideas.igs", "OCC8842_cylinder_CATIA.igs",
                                            "OCC8842_cone_Ideas.igs", "OCC17026-1.igs", "BIGES.igs",
-                                           "bug33327.igs"));
+                                           "bug33327.igs", "occ22470.igs", "OCC8842_cone_CATIA.igs"));
 
 }  // namespace
 }  // namespace trimkit::tess
