@@ -1,6 +1,7 @@
 #include "tess/snap_boundary_vertices.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -29,26 +30,42 @@ bool position_less(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     return std::tie(a.x(), a.y(), a.z()) < std::tie(b.x(), b.y(), b.z());
 }
 
-Eigen::Vector3d rounded(const Eigen::Vector3d& p, bool as_float) {
-    return as_float ? p.cast<float>().cast<double>() : p;
+// Vertices sorted by key, ties by index; equal keys form one group.
+template <typename Key>
+std::vector<std::int32_t> groups_by_key(const std::vector<Key>& key) {
+    const auto n = static_cast<std::int32_t>(key.size());
+    std::vector<std::int32_t> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
+        if (key[a] != key[b]) return key[a] < key[b];
+        return a < b;
+    });
+    std::vector<std::int32_t> group(n);
+    for (std::int32_t k = 0; k < n; ++k)
+        group[order[k]] = k > 0 && key[order[k]] == key[order[k - 1]] ? group[order[k - 1]] : order[k];
+    return group;
 }
 
 }  // namespace
 
 std::vector<std::int32_t> position_groups(const mesh::Mesh& mesh, bool as_float) {
-    const auto n = static_cast<std::int32_t>(mesh.positions.size());
-    std::vector<std::int32_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::vector<Eigen::Vector3d> p(n);
-    for (std::int32_t i = 0; i < n; ++i) p[i] = rounded(mesh.positions[i], as_float);
-    std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
-        if (p[a] != p[b]) return position_less(p[a], p[b]);
-        return a < b;
-    });
-    std::vector<std::int32_t> group(n);
-    for (std::int32_t k = 0; k < n; ++k)
-        group[order[k]] = k > 0 && p[order[k]] == p[order[k - 1]] ? group[order[k - 1]] : order[k];
-    return group;
+    // Float keys are kept as floats, never rounded back to double: GCC 12 at -O2/-O3
+    // left x and y of some vertices unrounded in p.cast<float>().cast<double>() (and
+    // in the scalar double(float(x)) spelling), so two vertices written at one float
+    // position fell into different groups (occ22470 reported 6 open edges on a mesh
+    // whose written file has none).
+    const std::size_t n = mesh.positions.size();
+    if (as_float) {
+        std::vector<std::array<float, 3>> key(n);
+        for (std::size_t i = 0; i < n; ++i)
+            key[i] = {static_cast<float>(mesh.positions[i].x()), static_cast<float>(mesh.positions[i].y()),
+                      static_cast<float>(mesh.positions[i].z())};
+        return groups_by_key(key);
+    }
+    std::vector<std::array<double, 3>> key(n);
+    for (std::size_t i = 0; i < n; ++i)
+        key[i] = {mesh.positions[i].x(), mesh.positions[i].y(), mesh.positions[i].z()};
+    return groups_by_key(key);
 }
 
 std::vector<std::array<std::int32_t, 3>> position_triangles(const mesh::Mesh& mesh,
