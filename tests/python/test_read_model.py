@@ -64,3 +64,15 @@ def test_bearing_faces_evaluate_finite(cad_sample):
         g = np.linspace(0.0, 1.0, 4)
         uv = np.array([[u0 + (u1 - u0) * a, v0 + (v1 - v0) * b] for a in g for b in g])
         assert np.isfinite(s.evaluate(uv)).all()
+
+
+def test_read_step_exists_only_with_step_support(cad_sample):
+    # The add-on shows its STEP operator when read_step exists (built with Open CASCADE).
+    assert hasattr(_trimkit, "read_step") == _trimkit.step_supported()
+    if not _trimkit.step_supported():
+        pytest.skip("trimkit built without Open CASCADE")
+    path = cad_sample("step/screw.step")
+    for model in (_trimkit.read_step(path), _trimkit.read_model(path)):
+        summary = _trimkit.summarize(model, path)
+        assert summary.faces == 10 and summary.units == "mm"
+        assert summary.bodies == 1

@@ -6,6 +6,7 @@
 
 #include "geom/error.h"
 #include "io/read_iges.h"
+#include "io/read_step.h"
 
 namespace trimkit::io {
 
@@ -14,8 +15,9 @@ geom::Model read_model(const std::string& path) {
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext == ".igs" || ext == ".iges") return read_iges(path);
-    throw geom::ReadError(path, 0,
-                          "unsupported file type '" + ext + "'; expected .igs or .iges");
+    if (ext == ".stp" || ext == ".step") return read_step(path);
+    throw geom::ReadError(path, 0, "unsupported file type '" + ext +
+                                       "'; expected .igs, .iges, .stp or .step");
 }
 
 }  // namespace trimkit::io

@@ -1,5 +1,6 @@
 // Reads any model file trimkit knows, choosing the reader by extension:
-// .igs/.iges (read_iges); others throw ReadError naming the file.
+// .igs/.iges (read_iges), .stp/.step (read_step, which throws when trimkit was
+// built without Open CASCADE); others throw ReadError naming the file.
 #pragma once
 
 #include <string>

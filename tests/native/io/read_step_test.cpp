@@ -1,0 +1,155 @@
+// read_step: the STEP samples in ../shared/data/cad/step/ against Open CASCADE's face
+// counts (bench/occt_reference/RESULTS.md, faces once per placement), finite surface
+// evaluation, closed trim loops, shared edges and units. Skips with a reason when trimkit
+// is built without OCCT or the samples are absent; the stub's refusal is tested then.
+#include "io/read_step.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "geom/error.h"
+#include "io/read_model.h"
+
+namespace trimkit::io {
+namespace {
+
+const std::string kStepDir = std::string(TRIMKIT_CAD_DIR) + "/step";
+
+// Faces OCCT 7.6.3 makes from each file (STEPControl_Reader, default settings).
+const std::vector<std::pair<std::string, int>> kOcctStepFaceCounts = {
+    {"as1-oc-214-mat.stp", 160}, {"bm2_ec_exhaust-A.stp", 58}, {"bm2_ec_lever-A.stp", 49},
+    {"bug32596_abc_0_13.step", 99}, {"ec_turbine-A.stp", 53}, {"linkrods.step", 37},
+    {"screw.step", 10}, {"xr1-tc-blt.stp", 7}, {"xr1-tc-nut.stp", 8}, {"xr1-tc-rod.stp", 4},
+};
+
+// Skips the current test unless STEP is supported and `file` exists; returns its path.
+#define REQUIRE_STEP_FILE(path_var, file)                                                 \
+    if (!step_supported()) GTEST_SKIP() << "trimkit built without Open CASCADE";           \
+    const std::string path_var = kStepDir + "/" + (file);                                 \
+    if (!std::filesystem::exists(path_var)) GTEST_SKIP() << path_var << " not found"
+
+TEST(ReadStep, WithoutOcctRefusesWithReadError) {
+    if (step_supported()) GTEST_SKIP() << "trimkit built with Open CASCADE";
+    try {
+        read_step("part.step");
+        ADD_FAILURE() << "no ReadError";
+    } catch (const geom::ReadError& e) {
+        EXPECT_EQ(e.file(), "part.step");
+        EXPECT_NE(e.reason().find("Open CASCADE"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ReadStep, ReadModelDispatchesStepExtensions) {
+    try {
+        read_model("/nonexistent/part.STEP");
+        ADD_FAILURE() << "no ReadError";
+    } catch (const geom::ReadError& e) {
+        EXPECT_EQ(std::string(e.what()).find("unsupported file type"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ReadStep, MissingOrBrokenFileIsReadError) {
+    if (!step_supported()) GTEST_SKIP() << "trimkit built without Open CASCADE";
+    EXPECT_THROW(read_step("/nonexistent/part.stp"), geom::ReadError);
+    const std::string bad = (std::filesystem::temp_directory_path() / "trimkit_bad.step").string();
+    {
+        std::FILE* f = std::fopen(bad.c_str(), "w");
+        ASSERT_NE(f, nullptr);
+        std::fputs("this is not STEP\n", f);
+        std::fclose(f);
+    }
+    EXPECT_THROW(read_step(bad), geom::ReadError);
+    std::filesystem::remove(bad);
+}
+
+TEST(ReadStep, FaceCountsMatchOpenCascade) {
+    if (!step_supported()) GTEST_SKIP() << "trimkit built without Open CASCADE";
+    if (!std::filesystem::exists(kStepDir)) GTEST_SKIP() << kStepDir << " not found";
+    for (const auto& [file, faces] : kOcctStepFaceCounts) {
+        const std::string path = kStepDir + "/" + file;
+        if (!std::filesystem::exists(path)) continue;
+        const geom::Model m = read_step(path);
+        EXPECT_EQ(static_cast<int>(m.faces.size()), faces) << file;
+        EXPECT_TRUE(m.warnings.empty()) << file << ": " << m.warnings.front();
+        EXPECT_EQ(m.units, "mm");
+        EXPECT_DOUBLE_EQ(m.scale_to_metres, 1e-3);
+        size_t in_bodies = m.free_faces.size();
+        for (const auto& body : m.bodies) in_bodies += body.faces.size();
+        EXPECT_EQ(in_bodies, m.faces.size()) << file;
+    }
+}
+
+TEST(ReadStep, FacesEvaluateFiniteAndLoopsClose) {
+    if (!step_supported()) GTEST_SKIP() << "trimkit built without Open CASCADE";
+    if (!std::filesystem::exists(kStepDir)) GTEST_SKIP() << kStepDir << " not found";
+    for (const auto& [file, faces] : kOcctStepFaceCounts) {
+        const std::string path = kStepDir + "/" + file;
+        if (!std::filesystem::exists(path)) continue;
+        const geom::Model m = read_step(path);
+        for (size_t f = 0; f < m.faces.size(); ++f) {
+            const geom::Face& face = m.faces[f];
+            const auto [u0, u1] = face.surface.domain_u();
+            const auto [v0, v1] = face.surface.domain_v();
+            for (int i = 0; i <= 4; ++i)
+                for (int j = 0; j <= 4; ++j) {
+                    const Eigen::Vector3d p =
+                        face.surface.evaluate(u0 + (u1 - u0) * i / 4, v0 + (v1 - v0) * j / 4);
+                    ASSERT_TRUE(p.allFinite()) << file << " face " << f;
+                }
+            ASSERT_FALSE(face.loops.empty()) << file << " face " << f;
+            EXPECT_TRUE(face.loops.front().outer) << file << " face " << f;
+            // Gaps between consecutive coedges, relative to the domain's size.
+            const double tol = 1e-4 * std::max(u1 - u0, v1 - v0);
+            for (const auto& loop : face.loops) {
+                const size_t n = loop.coedges.size();
+                for (size_t k = 0; k < n; ++k) {
+                    const auto& a = loop.coedges[k].curve;
+                    const auto& b = loop.coedges[(k + 1) % n].curve;
+                    const double gap =
+                        (a.evaluate(a.domain().second) - b.evaluate(b.domain().first)).norm();
+                    EXPECT_LE(gap, tol) << file << " face " << f << " coedge " << k;
+                }
+            }
+        }
+    }
+}
+
+TEST(ReadStep, ScrewSharesEdgesAndPlacesCurvesOnSurfaces) {
+    REQUIRE_STEP_FILE(path, "screw.step");
+    const geom::Model m = read_step(path);
+    ASSERT_EQ(m.faces.size(), 10u);
+    ASSERT_FALSE(m.edges.empty());
+    // Every non-degenerate shared edge is used by two coedges (closed solid).
+    std::vector<int> uses(m.edges.size(), 0);
+    for (const auto& face : m.faces)
+        for (const auto& loop : face.loops)
+            for (const auto& c : loop.coedges) {
+                ASSERT_GE(c.edge, 0);
+                ASSERT_LT(c.edge, static_cast<int>(m.edges.size()));
+                ++uses[static_cast<size_t>(c.edge)];
+            }
+    for (size_t e = 0; e < m.edges.size(); ++e)
+        if (m.edges[e].curve) {
+            EXPECT_EQ(uses[e], 2) << "edge " << e;
+        }
+    // The pcurve's start, lifted to the surface, is the edge's end vertex it starts at.
+    for (const auto& face : m.faces)
+        for (const auto& loop : face.loops)
+            for (const auto& c : loop.coedges) {
+                const geom::Edge& edge = m.edges[static_cast<size_t>(c.edge)];
+                if (!edge.curve || !edge.start || !edge.end) continue;
+                const Eigen::Vector2d uv = c.curve.evaluate(c.curve.domain().first);
+                const Eigen::Vector3d p = face.surface.evaluate(uv.x(), uv.y());
+                const Eigen::Vector3d expected = c.edge_reversed ? *edge.end : *edge.start;
+                EXPECT_LE((p - expected).norm(), 1e-3) << p.transpose() << " vs " << expected.transpose();
+            }
+}
+
+}  // namespace
+}  // namespace trimkit::io
