@@ -9,6 +9,7 @@
 
 #include "geom/bspline_basis.h"
 #include "geom/error.h"
+#include "geom/rational_weights.h"
 #include "geom/knot_vector.h"
 
 namespace trimkit::geom {
@@ -51,14 +52,7 @@ NurbsCurve<Dim>::NurbsCurve(int degree, std::vector<double> knots, std::vector<P
         if (!points[i].allFinite())
             throw InvalidInput(owner + ": point[" + std::to_string(i) + "] = " +
                                point_text<Dim>(points[i]) + "; control points must be finite");
-    bool rational = false;
-    for (size_t i = 0; i < weights.size(); ++i) {
-        if (!(weights[i] > 0.0) || !std::isfinite(weights[i]))
-            throw InvalidInput(owner + ": weight[" + std::to_string(i) + "] = " +
-                               format_value(weights[i]) +
-                               "; rational weights must be finite and > 0");
-        if (weights[i] != 1.0) rational = true;
-    }
+    const bool rational = validate_rational_weights(weights, owner);
     if (weights.empty()) weights.assign(points.size(), 1.0);
     p_ = degree;
     U_ = std::move(knots);

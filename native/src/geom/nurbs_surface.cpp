@@ -9,6 +9,7 @@
 
 #include "geom/bspline_basis.h"
 #include "geom/error.h"
+#include "geom/rational_weights.h"
 #include "geom/knot_vector.h"
 
 namespace trimkit::geom {
@@ -98,14 +99,7 @@ NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots
                                std::to_string(k / nv) + ", j = " + std::to_string(k % nv) +
                                ") = " + point_text(points[k]) +
                                "; control points must be finite");
-    bool rational = false;
-    for (size_t k = 0; k < weights.size(); ++k) {
-        if (!(weights[k] > 0.0) || !std::isfinite(weights[k]))
-            throw InvalidInput(owner + ": weight[" + std::to_string(k) + "] = " +
-                               format_value(weights[k]) +
-                               "; rational weights must be finite and > 0");
-        if (weights[k] != 1.0) rational = true;
-    }
+    const bool rational = validate_rational_weights(weights, owner);
     if (weights.empty()) weights.assign(points.size(), 1.0);
     pu_ = degree_u;
     pv_ = degree_v;
