@@ -19,9 +19,9 @@ SET_LOOP_TOTAL = bpy.app.version < (4, 0, 0)
 
 def create_mesh(part, name=None, smooth=True, exact_normals=True):
     """A new bpy.types.Mesh from an io.MeshPart. `exact_normals`: custom split normals
-    from the exact surface (Blender converts them element by element: about 3/4 of
-    the time for large meshes); without them smooth shading uses Blender's own
-    normals, split at the sharp edges."""
+    from the exact surface (Blender converts them element by element, see
+    set_custom_normals); without them smooth shading uses Blender's own normals,
+    split at the sharp edges."""
     me = bpy.data.meshes.new(name or part.name)
     n, m = len(part.positions), len(part.triangles)
     me.vertices.add(n)
@@ -46,9 +46,33 @@ def create_mesh(part, name=None, smooth=True, exact_normals=True):
             me.use_auto_smooth = True
             me.auto_smooth_angle = np.pi
         if exact_normals:
-            me.normals_split_custom_set(part.corner_normals)
+            set_custom_normals(me, part)
     me.update()
     return me
+
+
+def set_custom_normals(me, part):
+    """Custom split normals from part.corner_normals. Blender 3.4 converts them
+    element by element, so when every vertex's corners share one normal (smooth
+    CAD faces, one patch per vertex) it gets the per-vertex array, 1/6 of the
+    floats; otherwise (vertices welded across creases) the per-corner one."""
+    corners = np.ascontiguousarray(part.corner_normals, np.float32)
+    vertex_normals = vertex_normals_if_shared(part.triangles, corners, len(part.positions))
+    if vertex_normals is None:
+        me.normals_split_custom_set(corners)
+    else:
+        me.normals_split_custom_set_from_vertices(vertex_normals)
+
+
+def vertex_normals_if_shared(triangles, corner_normals, n):
+    """(n, 3) float32 normals when all corners of each vertex have exactly the same
+    normal (unused vertices get zero, Blender's "automatic"), else None."""
+    corners = np.asarray(triangles).ravel()
+    vertex_normals = np.zeros((n, 3), np.float32)
+    vertex_normals[corners] = corner_normals
+    if not np.array_equal(vertex_normals[corners], corner_normals):
+        return None
+    return vertex_normals
 
 
 def mark_edges(me, part):
