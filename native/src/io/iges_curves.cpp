@@ -222,13 +222,7 @@ NurbsCurve3d bspline_126(IgesParameterCursor& c) {
     std::vector<Vector3d> P(np);
     for (Vector3d& p : P) p = c.point("control point");
     const double v0 = c.real_or("V0", U[M]), v1 = c.real_or("V1", U[K + 1]);
-    bool rational = polynomial == 0;
-    if (rational) {
-        rational = false;
-        for (double x : w)
-            if (std::fabs(x - w[0]) > 1e-12 * std::fabs(w[0])) rational = true;
-    }
-    if (!rational) w.clear();
+    w = iges_weights(std::move(w), polynomial != 0);
     NurbsCurve3d curve(M, std::move(U), std::move(P), std::move(w));
     auto [a, b] = curve.domain();
     const double tol = 1e-9 * std::max(1.0, b - a);
@@ -303,6 +297,19 @@ std::vector<geom::NurbsCurve2d> IgesReader::parameter_curve(int de) {
     std::vector<geom::NurbsCurve2d> out;
     for (const NurbsCurve3d& k : curve(de)) out.push_back(geom::to_2d(k));
     return out;
+}
+
+std::vector<double> iges_weights(std::vector<double> w, bool polynomial_flag) {
+    // Relative spread below which equal weights mean "not rational".
+    constexpr double kEqualWeights = 1e-12;
+    bool rational = !polynomial_flag;
+    if (rational) {
+        rational = false;
+        for (double x : w)
+            if (std::fabs(x - w[0]) > kEqualWeights * std::fabs(w[0])) rational = true;
+    }
+    if (!rational) w.clear();
+    return w;
 }
 
 }  // namespace trimkit::io

@@ -45,6 +45,11 @@ struct IgesSurface {
     std::optional<geom::ArcParameterMap> angle;
 };
 
+// The weights of a 126/128 entity as NurbsCurve/NurbsSurface take them: empty
+// (polynomial) when the entity's PROP3 says polynomial or when all weights are
+// equal, which writers often emit with the rational flag set. [IGES] 4.23, 4.24.
+std::vector<double> iges_weights(std::vector<double> w, bool polynomial_flag);
+
 // Model-space points a face's boundary passes near, used to size unbounded
 // surfaces (planes, cylinders, ...) before their patch is built.
 using BoundaryHint = std::vector<Eigen::Vector3d>;

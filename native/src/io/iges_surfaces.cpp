@@ -68,13 +68,7 @@ NurbsSurface bspline_128(IgesParameterCursor& c) {
         for (long long i = 0; i < nu; ++i) P[i * nv + j] = c.point("control point");
     const double u0 = c.real_or("U0", U[M1]), u1 = c.real_or("U1", U[K1 + 1]);
     const double v0 = c.real_or("V0", V[M2]), v1 = c.real_or("V1", V[K2 + 1]);
-    bool rational = polynomial == 0;
-    if (rational) {
-        rational = false;
-        for (double x : w)
-            if (std::fabs(x - w[0]) > 1e-12 * std::fabs(w[0])) rational = true;
-    }
-    if (!rational) w.clear();
+    w = iges_weights(std::move(w), polynomial != 0);
     NurbsSurface s(M1, M2, std::move(U), std::move(V), static_cast<int>(nu), static_cast<int>(nv),
                    std::move(P), std::move(w));
     // Restrict to the parameter range the file uses when it is a proper part.
