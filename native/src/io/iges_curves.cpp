@@ -299,6 +299,22 @@ std::vector<geom::NurbsCurve2d> IgesReader::parameter_curve(int de) {
     return out;
 }
 
+std::vector<geom::NurbsCurve2d> IgesReader::parameter_curves(const std::vector<int>& des,
+                                                             std::vector<std::string>* warnings) {
+    std::vector<geom::NurbsCurve2d> joined;
+    try {
+        for (int de : des) {
+            if (de == 0) continue;
+            const std::vector<geom::NurbsCurve2d> pieces = parameter_curve(de);
+            joined.insert(joined.end(), pieces.begin(), pieces.end());
+        }
+    } catch (const geom::ReadError& err) {
+        warnings->push_back("parameter curve skipped: " + err.reason());
+        return {};
+    }
+    return joined;
+}
+
 std::vector<double> iges_weights(std::vector<double> w, bool polynomial_flag) {
     // Relative spread below which equal weights mean "not rational".
     constexpr double kEqualWeights = 1e-12;

@@ -83,6 +83,10 @@ public:
     const std::vector<geom::NurbsCurve3d>& curve(int de);
     // A parameter-space curve: the entity read as a curve and z dropped.
     std::vector<geom::NurbsCurve2d> parameter_curve(int de);
+    // The parameter curves `des` (0 entries skipped) joined in order; empty, with a
+    // warning added to `warnings`, if any of them cannot be read.
+    std::vector<geom::NurbsCurve2d> parameter_curves(const std::vector<int>& des,
+                                                     std::vector<std::string>* warnings);
     static bool is_curve_type(int type);
 
     // ---- surfaces (iges_surfaces.cpp) ----

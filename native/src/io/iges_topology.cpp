@@ -367,18 +367,7 @@ std::vector<int> IgesReader::read_face_entity(int de, const Eigen::Affine3d& pla
                             face.warnings.push_back("model curve D" + std::to_string(cp) + " skipped: " + err.reason());
                         }
                     }
-                    if (type == 1) {
-                        try {
-                            for (int p : pcs) {
-                                if (p == 0) continue;
-                                auto pc = parameter_curve(p);
-                                s.param.insert(s.param.end(), pc.begin(), pc.end());
-                            }
-                        } catch (const geom::ReadError& err) {
-                            s.param.clear();
-                            face.warnings.push_back("parameter curve skipped: " + err.reason());
-                        }
-                    }
+                    if (type == 1) s.param = parameter_curves(pcs, &face.warnings);
                     add_points(&hint, s.model);
                     segs.push_back(std::move(s));
                 }
@@ -487,16 +476,7 @@ int IgesReader::read_brep_face(int de, const Eigen::Affine3d& placement, bool re
                 face.warnings.push_back("edge " + std::to_string(index) + " of D" + std::to_string(list) +
                                         " skipped: " + err.reason());
             }
-            try {
-                for (int p : pcs) {
-                    if (p == 0) continue;
-                    auto pc = parameter_curve(p);
-                    s.param.insert(s.param.end(), pc.begin(), pc.end());
-                }
-            } catch (const geom::ReadError& err) {
-                s.param.clear();
-                face.warnings.push_back("parameter curve skipped: " + err.reason());
-            }
+            s.param = parameter_curves(pcs, &face.warnings);
             add_points(&hint, s.model);
             segs.push_back(std::move(s));
         }
