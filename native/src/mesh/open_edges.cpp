@@ -52,6 +52,11 @@ OpenEdges open_edges(const Mesh& mesh) {
     return result;
 }
 
-std::size_t count_open_edges(const Mesh& mesh) { return open_edges(mesh).boundary.size(); }
+std::size_t count_open_edges(const Mesh& mesh) {
+    const OpenEdges open = open_edges(mesh);
+    std::size_t odd = 0;
+    for (const EdgeUses& e : open.non_manifold) odd += e.count % 2;
+    return open.boundary.size() + odd;
+}
 
 }  // namespace trimkit::mesh

@@ -37,7 +37,8 @@ struct OpenEdges {
 // invalid mesh (see validate).
 OpenEdges open_edges(const Mesh& mesh);
 
-// Number of boundary edges (edges used by exactly one triangle).
+// Number of edges with an unpaired use: used by one triangle, or by an odd number
+// (a chord used three times is a boundary edge hidden under a sliver).
 std::size_t count_open_edges(const Mesh& mesh);
 
 }  // namespace trimkit::mesh

@@ -6,8 +6,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "mesh/open_edges.h"
 #include "tess/snap_boundary_vertices.h"
+#include "tess/unpaired_sides.h"
 
 namespace trimkit::tess {
 namespace {
@@ -40,19 +40,24 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
         mesh::Mesh topology;
         topology.positions = mesh.positions;
         topology.triangles = position_triangles(mesh, group);
-        const mesh::OpenEdges open = mesh::open_edges(topology);
-        if (open.boundary.empty()) break;
+        const std::vector<TriangleSide> open = unpaired_sides(mesh, topology.triangles);
+        if (open.empty()) break;
+        const auto side_ends = [&](const TriangleSide& s) {
+            const auto& t = topology.triangles[s.triangle];
+            return std::array<std::int32_t, 2>{t[s.corner], t[(s.corner + 1) % 3]};
+        };
         // Boundary vertices in a hash grid with cells about the mean open edge length.
         std::vector<int> vertices;
         double mean = 0.0;
-        for (const auto& e : open.boundary) {
+        for (const TriangleSide& s : open) {
+            const auto e = side_ends(s);
             vertices.push_back(e[0]);
             vertices.push_back(e[1]);
             mean += (mesh.positions[e[0]] - mesh.positions[e[1]]).norm();
         }
         std::sort(vertices.begin(), vertices.end());
         vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-        const double cell = std::max(mean / open.boundary.size(), 4.0 * distance) + 1e-300;
+        const double cell = std::max(mean / open.size(), 4.0 * distance) + 1e-300;
         auto key = [&](const Eigen::Vector3d& p) {
             return CellKey{static_cast<long long>(std::floor(p.x() / cell)),
                            static_cast<long long>(std::floor(p.y() / cell)),
@@ -61,19 +66,13 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
         std::unordered_map<CellKey, std::vector<int>, CellKeyHash> grid;
         for (int v : vertices) grid[key(mesh.positions[v])].push_back(v);
 
-        // The triangle using each directed edge.
-        std::map<std::pair<int, int>, int> owner;
-        for (size_t t = 0; t < topology.triangles.size(); ++t)
-            for (int k = 0; k < 3; ++k)
-                owner[{topology.triangles[t][k], topology.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
-
         std::vector<char> split(mesh.triangles.size(), 0);
         std::vector<std::array<std::int32_t, 3>> added;
         std::vector<std::int32_t> added_ids;
         std::size_t pass_inserted = 0;
-        for (const auto& e : open.boundary) {
-            const auto it = owner.find({e[0], e[1]});
-            if (it == owner.end() || split[it->second]) continue;
+        for (const TriangleSide& side : open) {
+            if (split[side.triangle]) continue;
+            const auto e = side_ends(side);
             const Eigen::Vector3d a = mesh.positions[e[0]];
             const Eigen::Vector3d b = mesh.positions[e[1]];
             const Eigen::Vector3d ab = b - a;
@@ -106,12 +105,11 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
                     }
             if (on_edge.empty()) continue;
             std::sort(on_edge.begin(), on_edge.end());
-            const int t = it->second;
+            const int t = side.triangle;
             split[t] = 1;
             const auto tri = mesh.triangles[t];
             const auto topo = topology.triangles[t];
-            int k = 0;
-            while (!(topo[k] == e[0] && topo[(k + 1) % 3] == e[1])) ++k;
+            const int k = side.corner;
             const int ia = tri[k], ib = tri[(k + 1) % 3];
             const int c = tri[(k + 2) % 3];
             int previous = ia;

@@ -7,6 +7,8 @@
 
 #include <Eigen/Geometry>
 
+#include "tess/triangulate_polygon.h"
+
 namespace trimkit::tess {
 
 namespace {
@@ -36,6 +38,28 @@ double perimeter(const std::vector<PolylinePoint>& P) {
     double L = 0.0;
     for (size_t i = 0; i < P.size(); ++i) L += (P[(i + 1) % P.size()].uv - P[i].uv).norm();
     return L;
+}
+
+// Width of a piece on the surface: twice its area over its perimeter. The area sums
+// the piece's (u,v) triangles times the area element |S_u x S_v| at their centroids
+// (triangles spanned by the xyz would not do: points along a curved 3D curve span
+// area however thin the piece).
+double width_on_surface(const std::vector<PolylinePoint>& P, const geom::NurbsSurface& surface) {
+    std::vector<Eigen::Vector2d> uv;
+    std::vector<int> ring;
+    double length = 0.0;
+    for (size_t i = 0; i < P.size(); ++i) {
+        uv.push_back(P[i].uv);
+        ring.push_back(static_cast<int>(i));
+        length += (P[(i + 1) % P.size()].xyz - P[i].xyz).norm();
+    }
+    double area = 0.0;
+    for (const auto& t : triangulate_polygon(uv, ring)) {
+        const Eigen::Vector2d c = (uv[t[0]] + uv[t[1]] + uv[t[2]]) / 3.0;
+        const geom::SurfaceDerivatives d = surface.derivatives(c.x(), c.y());
+        area += 0.5 * std::abs(cross(uv[t[1]] - uv[t[0]], uv[t[2]] - uv[t[0]])) * d.Su.cross(d.Sv).norm();
+    }
+    return length > 0.0 ? 2.0 * area / length : 0.0;
 }
 
 // A point to insert into segment `segment` at fraction s.
@@ -167,7 +191,8 @@ TrimPolygon join_trim_loop(const std::vector<TrimPolyline>& coedges, bool outer,
 }
 
 std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_uv,
-                                          LoopRepairReport* report, bool face_reversed) {
+                                          LoopRepairReport* report, bool face_reversed,
+                                          const geom::NurbsSurface* surface, double min_width) {
     LoopRepairReport local;
     LoopRepairReport& rep = report ? *report : local;
     std::vector<PolylinePoint> P = merge_close(loop.points, snap_uv);
@@ -230,6 +255,10 @@ std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_u
         }
         if ((loop.outer && a < 0.0) || (!loop.outer && a > 0.0))
             std::reverse(piece.begin(), piece.end());
+        if (!cuts.empty() && surface && min_width > 0.0 && width_on_surface(piece, *surface) <= min_width) {
+            rep.dropped += 1;
+            continue;
+        }
         out.push_back({std::move(piece), loop.outer});
     }
     rep.split_loops += std::max(0, static_cast<int>(out.size()) - 1);

@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "geom/nurbs_surface.h"
 #include "tess/trim_polyline.h"
 
 namespace trimkit::tess {
@@ -42,9 +43,15 @@ TrimPolygon join_trim_loop(const std::vector<TrimPolyline>& coedges, bool outer,
 // (outer clockwise); such input is expected, so `reoriented` is only recorded
 // when the loop disagrees with that convention. The output is always outer
 // counter-clockwise, holes clockwise.
+// surface, min_width (model units): when the loop crossed itself, pieces narrower than
+// min_width on the surface (twice their area over their perimeter) are dropped too: a trim curve running
+// back along the face's own boundary (a cut tangent to a seam) leaves zero-width
+// lobes whose sides belong to two different neighbours, which then meet directly.
 std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_uv,
                                           LoopRepairReport* report = nullptr,
-                                          bool face_reversed = false);
+                                          bool face_reversed = false,
+                                          const geom::NurbsSurface* surface = nullptr,
+                                          double min_width = 0.0);
 
 // Signed area in (u,v) of the polygon closed from back() to front()
 // (positive: counter-clockwise).

@@ -11,7 +11,7 @@
 
 #include <Eigen/Geometry>
 
-#include "mesh/open_edges.h"
+#include "tess/unpaired_sides.h"
 
 namespace trimkit::tess {
 namespace {
@@ -80,7 +80,7 @@ std::size_t count_position_open_edges(const mesh::Mesh& mesh) {
     mesh::Mesh topology;
     topology.positions = mesh.positions;
     topology.triangles = position_triangles(mesh, position_groups(mesh, true));
-    return mesh::count_open_edges(topology);
+    return unpaired_sides(mesh, topology.triangles).size();
 }
 
 std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
@@ -89,9 +89,11 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
     mesh::Mesh topology;
     topology.positions = mesh.positions;
     topology.triangles = position_triangles(mesh, group);
-    const mesh::OpenEdges open = mesh::open_edges(topology);
     std::vector<std::int32_t> ends;  // position groups on open edges
-    for (const auto& e : open.boundary) ends.push_back(e[0]), ends.push_back(e[1]);
+    for (const TriangleSide& s : unpaired_sides(mesh, topology.triangles)) {
+        ends.push_back(topology.triangles[s.triangle][s.corner]);
+        ends.push_back(topology.triangles[s.triangle][(s.corner + 1) % 3]);
+    }
     std::sort(ends.begin(), ends.end());
     ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
     if (ends.size() < 2) return 0;

@@ -40,6 +40,9 @@ constexpr double kDuplicatePointShare = 1e-6;
 // Vertices of one face at one position whose uvs differ by more than this fraction of
 // the domain diagonal lie on a seam or a pole: they stay separate vertices.
 constexpr double kSplitUvShare = 1e-3;
+// Pieces of a self-crossing trim loop narrower than this share of the tolerance are
+// dropped (repair_trim_loop): the gap they leave is narrower still.
+constexpr double kSliverWidthShare = 0.01;
 // Samples per trim curve and per side of the (u,v) grid for model_diagonal.
 constexpr int kDiagonalCurveSamples = 16, kDiagonalGridSamples = 12;
 
@@ -273,7 +276,9 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
                 }
                 LoopRepairReport report;
                 const TrimPolygon joined = join_trim_loop(polylines, loop.outer, snap_uv, &report);
-                for (TrimPolygon& p : repair_trim_loop(joined, snap_uv, &report)) polygons.push_back(std::move(p));
+                for (TrimPolygon& p : repair_trim_loop(joined, snap_uv, &report, face.reversed, &face.surface,
+                                                       kSliverWidthShare * options.tolerance))
+                    polygons.push_back(std::move(p));
                 if (report.changed())
                     out.warnings.push_back("face " + std::to_string(f) + ": trim loop " + std::to_string(l) +
                                            " repaired (" + std::to_string(report.crossings) + " crossings, " +

@@ -44,7 +44,8 @@ mesh::Mesh face_mesh(const geom::Face& face, const TessellationOptions& options,
             polylines.push_back(approximate_trim_curve(face.surface, coedge.curve,
                                                        trim_tolerance(options), options.trim_method));
         const TrimPolygon joined = join_trim_loop(polylines, loop.outer, snap_uv, report);
-        for (TrimPolygon& p : repair_trim_loop(joined, snap_uv, report, face.reversed))
+        for (TrimPolygon& p : repair_trim_loop(joined, snap_uv, report, face.reversed, &face.surface,
+                                               0.01 * options.tolerance))
             polygons.push_back(std::move(p));
     }
     mesh::Mesh m = tessellate_face(face, polygons, options, face_id);
@@ -116,8 +117,10 @@ TEST(Issue3TrimLoops, PRO19800FaceMeshCoversTheTrimmedConeOnce) {
 
 // Faces 0 and 5 (the spring's tube halves) have trim wires that run back and
 // forth along the domain boundary where the ground end is flat; the repair
-// cuts them at their 7 and 2 crossings. Each face's mesh must stay on its
-// surface and cover its region. (The whole-model mesh is measured per face here
+// cuts them at their 7 and 2 crossings. On face 0 the cut runs back up along the
+// seam: 5 of its lobes are under 0.01 T wide and are dropped, so faces 1 and 5 meet
+// directly there. Each face's mesh must stay on its surface with its area; face 5
+// must cover its region alone, face 0 together with its neighbours (whole model). (The whole-model mesh is measured per face here
 // too: welding gives shared vertices the (u,v) of the neighbouring face.)
 TEST(Issue3TrimLoops, BugSpring22869SelfIntersectingLoopsGiveValidRegions) {
     TRIMKIT_CAD_SAMPLE(path, "iges/bug22869_Spring.igs");
@@ -127,14 +130,21 @@ TEST(Issue3TrimLoops, BugSpring22869SelfIntersectingLoopsGiveValidRegions) {
         LoopRepairReport report;
         const mesh::Mesh m = face_mesh(model.faces[f], options, f, &report);
         EXPECT_GT(report.crossings, 0) << "face " << f;
+        EXPECT_EQ(report.dropped, f == 0 ? 5 : 0) << "face " << f;
         const DeviationReport d = measure_deviation(single_face(model, f), m, quick_sampling());
-        expect_within(d, options.tolerance, "bug22869_Spring.igs face " + std::to_string(f));
+        EXPECT_LE(d.mesh_to_surface.max, options.tolerance) << "face " << f;
+        EXPECT_NEAR(d.area_ratio, 1.0, kAreaRatioBand) << "face " << f;
+        if (f == 5) EXPECT_LE(d.surface_to_mesh.max, options.tolerance) << "face " << f;
         EXPECT_LE(d.mesh_to_surface_max_uv, options.tolerance) << "face " << f << ": |P - S(uv)|";
     }
     const TessellationResult r = tessellate_model(model, options);
     EXPECT_TRUE(r.failed_faces.empty());
     EXPECT_EQ(r.faces_meshed, r.faces);
+    // Left open: the sides of the lobes 0.6-1.4 T wide, which only face 0 or 5 covers
+    // (66 open sides before the zero-width lobes were dropped).
+    EXPECT_LE(r.open_edges, 24u);
     const DeviationReport d = measure_deviation(model, r.mesh, quick_sampling());
+    EXPECT_LE(d.mesh_to_surface.max, options.tolerance);
     EXPECT_LE(d.surface_to_mesh.max, options.tolerance);
     EXPECT_NEAR(d.area_ratio, 1.0, kAreaRatioBand);
 }

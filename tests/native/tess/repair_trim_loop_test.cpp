@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "geom/analytic_surfaces.h"
 #include "tess/tess_test_cases.h"
 
 namespace trimkit::tess {
@@ -123,6 +124,38 @@ TEST(RepairTrimLoop, DropsSpikeAndZeroAreaSliver) {
     out = repair_trim_loop(overlap, kSnap);
     ASSERT_EQ(out.size(), 1u);
     EXPECT_NEAR(signed_area(out[0].points), 1.0, 1e-12);
+}
+
+// bug22869_Spring.igs: the cut curve runs back up along the face's own seam edge
+// (u = 0 here), crossing it, so the loop leaves lobes 2e-4 wide in (u,v) whose
+// sides belong to two different neighbours. On a 10 x 10 plane they are 1e-3 wide:
+// dropped below min_width, kept above it or without a surface.
+TEST(RepairTrimLoop, ZeroWidthLobesAlongTheBoundaryAreDroppedOnTheSurface) {
+    const geom::NurbsSurface plane = geom::plane_patch(Eigen::Vector3d::Zero(), 10.0 * Eigen::Vector3d::UnitX(),
+                                                       10.0 * Eigen::Vector3d::UnitY(), 0, 1, 0, 1);
+    auto on_plane = [&](double u, double v) {
+        PolylinePoint p = at(u, v);
+        p.xyz = plane.evaluate(u, v);
+        return p;
+    };
+    const TrimPolygon loop{{on_plane(1, 0.4), on_plane(1, 1), on_plane(0, 1), on_plane(0, 0),
+                            on_plane(2e-4, 0.1), on_plane(-2e-4, 0.2), on_plane(2e-4, 0.3), on_plane(0.5, 0.4)},
+                           true};
+    LoopRepairReport kept_report, dropped_report;
+    const auto kept = repair_trim_loop(loop, kSnap, &kept_report);
+    EXPECT_EQ(kept_report.crossings, 2);
+    ASSERT_EQ(kept.size(), 3u);  // the main region and two lobes
+    EXPECT_EQ(repair_trim_loop(loop, kSnap, nullptr, false, &plane, 1e-4).size(), 3u);  // lobes wider than that
+
+    const auto dropped = repair_trim_loop(loop, kSnap, &dropped_report, false, &plane, 0.01);
+    ASSERT_EQ(dropped.size(), 1u);
+    EXPECT_EQ(dropped_report.dropped, 2);
+    double lobes = 0.0;
+    for (const auto& piece : kept) lobes += std::abs(signed_area(piece.points));
+    lobes -= std::abs(signed_area(dropped[0].points));
+    EXPECT_GT(lobes, 0.0);
+    EXPECT_LT(lobes, 1e-4);  // what was dropped: the lobes' (u,v) area only
+    EXPECT_TRUE(is_simple(dropped[0].points));
 }
 
 TEST(RepairTrimLoop, DegenerateLoopIsDropped) {
