@@ -186,6 +186,9 @@ double signed_area(const std::vector<Eigen::Vector2d>& p) {
 }
 
 // Even-odd point in polygon (half-open in v, so vertices on the ray count once).
+// Side midpoints of an island hole tested against the rings of its cell (majority).
+constexpr size_t kHoleProbes = 5;
+
 bool contains(const std::vector<Eigen::Vector2d>& poly, const Eigen::Vector2d& p) {
     bool in = false;
     for (size_t i = 0, n = poly.size(), j = n - 1; i < n; j = i++) {
@@ -468,11 +471,19 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
             result.polygons.push_back(std::move(polygon));
         }
         for (auto& hole : holes) {
-            const Eigen::Vector2d probe = table.uv(hole.front());
+            // Probes at midpoints of the hole's sides, not at its vertices: a hole may
+            // touch its ring at a vertex (a circle tangent inside another, both loops
+            // starting at the touching point), where containment is undecided.
+            std::vector<Eigen::Vector2d> probes;
+            const size_t step = std::max<size_t>(1, hole.size() / kHoleProbes);
+            for (size_t k = 0; k < hole.size() && probes.size() < kHoleProbes; k += step)
+                probes.push_back(0.5 * (table.uv(hole[k]) + table.uv(hole[(k + 1) % hole.size()])));
             for (size_t k = first_polygon; k < result.polygons.size(); ++k) {
                 std::vector<Eigen::Vector2d> uv;
                 for (int v : result.polygons[k].outer) uv.push_back(table.uv(v));
-                if (contains(uv, probe)) {
+                size_t in = 0;
+                for (const Eigen::Vector2d& probe : probes) in += contains(uv, probe) ? 1 : 0;
+                if (2 * in > probes.size()) {
                     result.polygons[k].holes.push_back(std::move(hole));
                     result.polygons[k].whole_cell = false;
                     break;
