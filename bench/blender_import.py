@@ -1,16 +1,32 @@
-"""Blender import timings: a 1M-triangle mesh through blender_mesh.create_mesh, and
-bearing.iges / hammer.iges through the import operator at its default tolerance
-(0.1 % of the model's diagonal).
+"""Blender import timings: a 1M-triangle mesh through blender_mesh.create_mesh (total
+and each step of blender_mesh.STEPS), and bearing.iges / hammer.iges / screw.step
+through the import operators at their default tolerance (0.1 % of the model's diagonal).
 
-    blender -b --factory-startup -P bench/blender_import.py [-- --cad ../shared/data/cad]
+    blender -b --factory-startup -P bench/blender_import.py \
+        [-- --cad ../shared/data/cad --python build/python --repeat 3]
 """
 import argparse
+import collections
+import functools
 import pathlib
 import sys
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT / "addon"), str(ROOT / "build" / "python")]
+
+
+def parse():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    parser = argparse.ArgumentParser(prog="bench/blender_import.py")
+    parser.add_argument("--cad", default=str(ROOT.parent / "shared" / "data" / "cad"))
+    parser.add_argument("--python", default=str(ROOT / "build" / "python"),
+                        help="folder holding the built _trimkit module")
+    parser.add_argument("--repeat", type=int, default=3, help="create_mesh runs per setting")
+    return parser.parse_args(argv)
+
+
+ARGS = parse()
+sys.path[:0] = [str(ROOT / "addon"), ARGS.python]
 
 import bpy  # noqa: E402
 import numpy as np  # noqa: E402
@@ -37,35 +53,66 @@ def grid_part(n):
                        materials=[io.material_name(None)], material_index=np.zeros(m, np.int32))
 
 
-def main():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--cad", default=str(ROOT.parent / "shared" / "data" / "cad"))
-    args = parser.parse_args(argv)
-    trimkit.register()
+def load_average():
+    return pathlib.Path("/proc/loadavg").read_text().split()[0]
 
-    part = grid_part(708)
+
+def timed_steps(names):
+    """Wraps blender_mesh's step functions so that each call adds its time to the returned dict."""
+    seconds = collections.defaultdict(float)
+
+    def wrap(name, step):
+        @functools.wraps(step)
+        def run(*args, **kwargs):
+            start = time.perf_counter()
+            try:
+                return step(*args, **kwargs)
+            finally:
+                seconds[name] += time.perf_counter() - start
+        return run
+    for name in names:
+        setattr(blender_mesh, name, wrap(name, getattr(blender_mesh, name)))
+    return seconds
+
+
+def bench_create_mesh(part, repeat):
+    """create_mesh without and with exact normals, `repeat` times each, with the steps' times."""
+    steps = timed_steps(blender_mesh.STEPS + ("vertex_normals_if_shared",))
     for exact_normals in (False, True):
-        start = time.perf_counter()
-        me = blender_mesh.create_mesh(part, exact_normals=exact_normals)
-        seconds = time.perf_counter() - start
-        print(f"blender_mesh.create_mesh: {len(me.polygons)} triangles in {seconds:.2f} s "
-              f"(UV map, seams, sharp edges, cad_face, material"
-              f"{', exact custom normals' if exact_normals else ''})")
+        for _ in range(repeat):
+            steps.clear()
+            start, cpu = time.perf_counter(), time.process_time()
+            me = blender_mesh.create_mesh(part, exact_normals=exact_normals)
+            seconds, cpu = time.perf_counter() - start, time.process_time() - cpu
+            print(f"blender_mesh.create_mesh: {len(me.polygons)} triangles in {seconds:.2f} s "
+                  f"(CPU {cpu:.2f} s; UV map, seams, sharp edges, cad_face, material"
+                  f"{', exact custom normals' if exact_normals else ''}), load average {load_average()}")
+            print("    " + ", ".join(f"{name} {t:.3f}" for name, t in steps.items()))
+            bpy.data.meshes.remove(me)
 
-    for name in ("bearing.iges", "hammer.iges"):
-        path = pathlib.Path(args.cad) / "iges" / name
-        if not path.exists():
-            print(f"{name}: skipped, not found under {args.cad}")
-            continue
-        bpy.ops.wm.read_homefile(use_empty=True)
-        start = time.perf_counter()
-        result = bpy.ops.import_scene.trimkit_iges(filepath=str(path))
-        seconds = time.perf_counter() - start
-        objects = [o for o in bpy.data.objects if o.type == 'MESH']
-        tris = sum(len(o.data.polygons) for o in objects)
-        print(f"{name}: import {seconds:.2f} s ({result}), {len(objects)} objects, {tris} triangles, "
-              f"tessellation {objects[0].trimkit.seconds:.2f} s")
 
+def main():
+    trimkit.register()
+    bench_create_mesh(grid_part(708), ARGS.repeat)
+
+    for relative in ("iges/bearing.iges", "iges/hammer.iges", "step/screw.step"):
+        bench_import(pathlib.Path(ARGS.cad) / relative)
+
+
+def bench_import(path):
+    """One CAD file through its import operator at the default tolerance."""
+    step = path.suffix == ".step"
+    if not path.exists() or (step and not io.has_step()):
+        print(f"{path.name}: skipped, not found or no STEP support")
+        return
+    bpy.ops.wm.read_homefile(use_empty=True)
+    operator = bpy.ops.import_scene.trimkit_step if step else bpy.ops.import_scene.trimkit_iges
+    start = time.perf_counter()
+    result = operator(filepath=str(path))
+    seconds = time.perf_counter() - start
+    objects = [o for o in bpy.data.objects if o.type == 'MESH']
+    tris = sum(len(o.data.polygons) for o in objects)
+    print(f"{path.name}: import {seconds:.2f} s ({result}), {len(objects)} objects, {tris} triangles, "
+          f"tessellation {objects[0].trimkit.seconds:.2f} s")
 
 main()

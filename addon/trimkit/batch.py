@@ -72,8 +72,9 @@ def convert(inputs, output, tolerance, relative=False, angle=30.0, mode="guarant
                 result = io.tessellate(model, tolerance, relative=relative, angle=math.radians(angle),
                                        mode=mode, trim_method=trim_method, scale=model.scale_to_metres,
                                        split=split, stem=pathlib.Path(path).stem)
-                parts += result.parts
-                count = len(result.parts)
+                placed = io.placed_parts(result.parts, io.placements(model, model.scale_to_metres))
+                parts += placed
+                count = len(placed)
         except (RuntimeError, ValueError, OSError) as err:
             raise type(err)(f"{path}: {err}") from err
         summary = dict(file=str(path), objects=count, faces=result.faces, triangles=result.triangles,

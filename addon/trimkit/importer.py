@@ -6,6 +6,7 @@ import dataclasses
 import pathlib
 
 import bpy
+import mathutils
 
 from . import blender_mesh, io, stored_source, tbp_objects
 
@@ -33,7 +34,9 @@ def scene_scale(model, scene, scale):
 
 
 def import_file(context, filepath, settings, progress=None):
-    """Reads, meshes and links one CAD file into the active collection.
+    """Reads, meshes and links one CAD file into the active collection; a model with
+    instances goes into a new collection named after the file, one object per
+    instance, the instances of a body sharing its mesh (linked duplicates).
 
     Returns (objects, io.Tessellation). Raises RuntimeError/ValueError before
     anything is added to the scene when the file or the settings are bad.
@@ -46,39 +49,67 @@ def import_file(context, filepath, settings, progress=None):
     result = io.tessellate(model, tolerance, relative=settings.relative, angle=settings.angle,
                            mode=settings.mode, trim_method=settings.trim_method, scale=scale,
                            split=settings.split, stem=path.stem)
+    placements = io.placements(model, scale)
     text = stored_source.store(path.name, data)
-    collection = context.collection
+    collection = new_collection(context, path.stem) if placements else context.collection
     objects = []
     for k, part in enumerate(result.parts):
         me = blender_mesh.create_mesh(part, smooth=settings.smooth, exact_normals=settings.exact_normals)
-        obj = bpy.data.objects.new(part.name, me)
-        collection.objects.link(obj)
-        props = obj.trimkit
-        props.source = text
-        props.source_name = path.name
-        props.part = part.kind
-        props.part_index = part.index
-        props.scale = scale
-        props.tolerance = result.tolerance * scale
-        props.render_tolerance = settings.render_tolerance
-        props.relative = settings.relative
-        props.relative_tolerance = settings.relative_tolerance
-        props.angle = settings.angle
-        props.mode = settings.mode
-        props.trim_method = settings.trim_method
-        props.smooth = settings.smooth
-        props.exact_normals = settings.exact_normals
-        record_stats(props, part, result)
-        objects.append(obj)
+        for name, matrix in object_placements(part, placements):
+            obj = bpy.data.objects.new(name, me)
+            collection.objects.link(obj)
+            if matrix is not None:
+                obj.matrix_world = mathutils.Matrix(matrix.tolist())
+            store_settings(obj.trimkit, text, path.name, part, scale, result, settings)
+            objects.append(obj)
         if progress:
             progress((k + 1) / len(result.parts))
+    select_only(context, objects)
+    return objects, result
+
+
+def new_collection(context, name):
+    collection = bpy.data.collections.new(name)
+    context.collection.children.link(collection)
+    return collection
+
+
+def object_placements(part, placements):
+    """[(name, (4, 4) matrix or None)] of the objects showing `part`: one per instance
+    of its body, else one, untransformed."""
+    if part.kind == "BODY":
+        mine = [p for p in placements if p.body == part.index]
+        if mine:
+            return [(p.name or part.name, p.matrix) for p in mine]
+    return [(part.name, None)]
+
+
+def store_settings(props, text, file_name, part, scale, result, settings):
+    """What re-meshing the object needs: the stored file, its part and the settings."""
+    props.source = text
+    props.source_name = file_name
+    props.part = part.kind
+    props.part_index = part.index
+    props.scale = scale
+    props.tolerance = result.tolerance * scale
+    props.render_tolerance = settings.render_tolerance
+    props.relative = settings.relative
+    props.relative_tolerance = settings.relative_tolerance
+    props.angle = settings.angle
+    props.mode = settings.mode
+    props.trim_method = settings.trim_method
+    props.smooth = settings.smooth
+    props.exact_normals = settings.exact_normals
+    record_stats(props, part, result)
+
+
+def select_only(context, objects):
     for obj in context.view_layer.objects.selected:
         obj.select_set(False)
     for obj in objects:
         obj.select_set(True)
     if objects:
         context.view_layer.objects.active = objects[0]
-    return objects, result
 
 
 def record_stats(props, part, result):
@@ -111,6 +142,8 @@ def retessellate(objects, render=False, progress=None):
     re-mesh at their levels/lod (tbp_objects.remesh; no render detail)."""
     tbp = [o for o in objects if o.trimkit.kind != 'CAD']
     objects = [o for o in objects if o.trimkit.kind == 'CAD']
+    if not render:
+        objects = with_linked_duplicates(objects)
     for k, obj in enumerate(tbp if not render else []):
         tbp_objects.remesh(obj)
         if progress:
@@ -125,16 +158,54 @@ def retessellate(objects, render=False, progress=None):
         props = members[0].trimkit
         model = io.read_bytes(stored_source.load(props.source), stored_source.file_name(props.source))
         tolerance, relative = key[1]
+        wanted = list(dict.fromkeys(object_part(o) for o in members))  # instances share a part
         result = io.tessellate(model, tolerance, relative=relative, angle=props.angle, mode=props.mode,
-                               trim_method=props.trim_method, scale=props.scale,
-                               parts=[(o.trimkit.part, o.trimkit.part_index) for o in members])
-        for obj, part in zip(members, result.parts):
-            blender_mesh.replace_mesh(obj, part, obj.trimkit.smooth, obj.trimkit.exact_normals)
-            if not render:
-                if obj.trimkit.relative:
-                    obj.trimkit.tolerance = result.tolerance * obj.trimkit.scale
-                record_stats(obj.trimkit, part, result)
+                               trim_method=props.trim_method, scale=props.scale, parts=wanted)
+        for part in result.parts:
+            remesh_part([o for o in members if object_part(o) == (part.kind, part.index)], part, result, render)
         results.append(result)
         if progress:
             progress((k + 1) / len(groups))
     return results
+
+
+# The settings of Object.trimkit that decide the mesh.
+MESH_SETTINGS = ("tolerance", "render_tolerance", "relative", "relative_tolerance", "angle", "mode",
+                 "trim_method", "smooth", "exact_normals")
+
+
+def with_linked_duplicates(objects):
+    """`objects` and the other trimkit objects sharing a mesh with one of them (the
+    instances of a body), which take that object's mesh settings: re-meshing shared
+    data changes every user, as editing it in Blender does."""
+    first = {}
+    for obj in objects:
+        first.setdefault(obj.data.as_pointer(), obj)
+    out, seen = list(objects), set(objects)
+    for other in bpy.data.objects:
+        source = first.get(other.data.as_pointer()) if is_trimkit(other) else None
+        if source is not None and other not in seen:
+            for name in MESH_SETTINGS:
+                setattr(other.trimkit, name, getattr(source.trimkit, name))
+            out.append(other)
+    return out
+
+
+def object_part(obj):
+    return obj.trimkit.part, obj.trimkit.part_index
+
+
+def remesh_part(objects, part, result, render):
+    """New meshes from `part` for the objects showing it: one per mesh they share, so
+    linked duplicates (instances) stay linked."""
+    sharing = {}
+    for obj in objects:
+        sharing.setdefault(obj.data.as_pointer(), []).append(obj)
+    for users in sharing.values():
+        blender_mesh.replace_shared_mesh(users, part, users[0].trimkit.smooth, users[0].trimkit.exact_normals)
+    if render:
+        return
+    for obj in objects:
+        if obj.trimkit.relative:
+            obj.trimkit.tolerance = result.tolerance * obj.trimkit.scale
+        record_stats(obj.trimkit, part, result)

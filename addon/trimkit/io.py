@@ -7,6 +7,7 @@ k of triangle t is row 3t + k.
 """
 import dataclasses
 import pathlib
+import tempfile
 import time
 import zlib
 
@@ -73,8 +74,27 @@ def read_source(path):
     return read_bytes(data, pathlib.Path(path).name), data
 
 
+STEP_SUFFIXES = (".stp", ".step")
+
+
 def read_bytes(data, name):
+    """Model from a CAD file's bytes, the reader chosen by `name`'s extension: IGES is
+    parsed in memory, STEP through a temporary copy (Open CASCADE reads files)."""
+    if pathlib.Path(name).suffix.lower() in STEP_SUFFIXES:
+        return read_step_bytes(data, name)
     return native().read_model_bytes(data, name)
+
+
+def read_step_bytes(data, name):
+    if not has_step():
+        raise RuntimeError(f"{name}: this trimkit module cannot read STEP (built without Open CASCADE)")
+    with tempfile.TemporaryDirectory(prefix="trimkit-") as folder:
+        path = pathlib.Path(folder) / pathlib.Path(name).name
+        path.write_bytes(data)
+        try:
+            return native().read_step(str(path))
+        except RuntimeError as err:  # name the file, not its temporary copy
+            raise RuntimeError(str(err).replace(str(path), name)) from None
 
 
 def compress(data):
@@ -100,11 +120,13 @@ def tessellate(model, tolerance, *, relative=False, angle=np.radians(30.0), mode
     """Meshes `model` and splits the mesh into parts.
 
     split: "BODY" (one part per body, faces in no body together), "FACE" (one
-    part per face) or "MODEL" (one part). `parts`: optional [(kind, index)] to
+    part per face) or "MODEL" (one part); always "BODY" for a model with instances,
+    which place whole bodies (see placements). `parts`: optional [(kind, index)] to
     return only those parts (re-meshing existing objects). Raises ValueError
     for bad options.
     """
     start = time.perf_counter()
+    split = "BODY" if model.instances else split
     options = native().TessellationOptions(
         tolerance=absolute_tolerance(model, tolerance, relative), angle=angle,
         mode=mode, trim_method=trim_method)
@@ -134,6 +156,51 @@ def part_list(model, split):
             parts.append(("MODEL", -1))  # free faces
         return parts
     return [("MODEL", -1)]
+
+
+@dataclasses.dataclass
+class Placement:
+    """One instance of a body: where a linked duplicate of the body's mesh goes."""
+    body: int
+    matrix: np.ndarray  # (4, 4) float64, the body's coordinates to the scene's (Blender units)
+    name: str
+
+
+def placements(model, scale=1.0):
+    """The model's instances as Placements (translations scaled like the positions);
+    empty when each body appears once, untransformed."""
+    out = []
+    for instance in model.instances:
+        matrix = np.array(instance.matrix, np.float64)
+        matrix[:3, 3] *= scale
+        out.append(Placement(body=instance.body, matrix=matrix, name=instance.name))
+    return out
+
+
+def placed_parts(parts, placements):
+    """The parts as flat meshes (file export): an instanced body once per placement,
+    moved there; the other parts as they are."""
+    out = []
+    for part in parts:
+        mine = [p for p in placements if part.kind == "BODY" and p.body == part.index]
+        out += [moved_part(part, p.matrix) for p in mine] if mine else [part]
+    return out
+
+
+def moved_part(part, matrix):
+    """`part` mapped by the 4x4 affine `matrix`: positions, normals by the inverse
+    transpose; a mirroring matrix reverses each triangle's corners to keep it outward."""
+    linear, offset = matrix[:3, :3], matrix[:3, 3]
+    normals = part.corner_normals @ np.linalg.inv(linear)  # rows: (L^-T n)^T = n^T L^-1
+    normals /= np.linalg.norm(normals, axis=1, keepdims=True)
+    moved = dataclasses.replace(part, positions=part.positions @ linear.T + offset,
+                                corner_normals=normals.astype(np.float32))
+    if np.linalg.det(linear) > 0.0:
+        return moved
+    m = len(part.triangles)
+    return dataclasses.replace(moved, triangles=np.ascontiguousarray(part.triangles[:, ::-1]),
+                               corner_uvs=moved.corner_uvs.reshape(m, 3, 2)[:, ::-1].reshape(-1, 2),
+                               corner_normals=moved.corner_normals.reshape(m, 3, 3)[:, ::-1].reshape(-1, 3))
 
 
 def part_faces(model, kind, index):

@@ -59,6 +59,13 @@ void bind_geom(py::module_& m) {
         .def_readonly("faces", &geom::Body::faces)
         .def_readonly("closed", &geom::Body::closed);
 
+    py::class_<geom::Instance>(m, "Instance")
+        .def_readonly("body", &geom::Instance::body)
+        .def_property_readonly(
+            "matrix", [](const geom::Instance& i) -> Eigen::Matrix4d { return i.transform.matrix(); },
+            "(4, 4) float64: the body's coordinates to the model's (file units), column vectors.")
+        .def_readonly("name", &geom::Instance::name);
+
     py::class_<geom::Color>(m, "Color")
         .def_readonly("rgb", &geom::Color::rgb)
         .def_readonly("name", &geom::Color::name);
@@ -68,6 +75,7 @@ void bind_geom(py::module_& m) {
         .def_readonly("scale_to_metres", &geom::Model::scale_to_metres)
         .def_readonly("faces", &geom::Model::faces)
         .def_readonly("bodies", &geom::Model::bodies)
+        .def_readonly("instances", &geom::Model::instances)
         .def_readonly("colors", &geom::Model::colors)
         .def_readonly("warnings", &geom::Model::warnings);
 }

@@ -197,6 +197,186 @@ def test_damaged_file_reports_error_and_leaves_scene_unchanged():
     print(f"    damaged file: {message.strip().splitlines()[-1]}")
 
 
+def loop_normals(me):
+    """(3m, 3) loop normals as Blender shades them (custom normals applied)."""
+    import numpy as np
+    normals = np.empty(3 * len(me.loops), np.float32)
+    if hasattr(me, "corner_normals"):  # Blender 4.1+
+        me.corner_normals.foreach_get("vector", normals)
+    else:
+        me.calc_normals_split()
+        me.loops.foreach_get("normal", normals)
+    return normals.reshape(-1, 3)
+
+
+def worst_normal_angle(me, part):
+    """Largest angle (degrees) between Blender's loop normals and part.corner_normals."""
+    import numpy as np
+    cos = np.sum(loop_normals(me) * part.corner_normals, axis=1)
+    return float(np.degrees(np.arccos(np.clip(cos.min(), -1.0, 1.0))))
+
+
+# Blender stores a custom normal as two 16-bit angles in its corner's normal space.
+NORMAL_ANGLE_LIMIT = 0.05  # degrees
+
+
+def test_custom_normals_are_the_exact_surface_normals():
+    from trimkit import blender_mesh, io
+    model, _ = io.read_source(BRACKET)
+    part = io.tessellate(model, 0.001, relative=True, scale=1e-3).parts[0]
+    me = blender_mesh.create_mesh(part)
+    assert blender_mesh.vertex_normals_if_shared(part.triangles, part.corner_normals, len(part.positions)) \
+        is not None, "bracket: expected the per-vertex path"
+    bracket_angle = worst_normal_angle(me, part)
+    blender_angle = worst_normal_angle(blender_mesh.create_mesh(part, exact_normals=False), part)
+    assert blender_angle > 10 * NORMAL_ANGLE_LIMIT, f"Blender's own normals are as close ({blender_angle} deg)"
+    cube = io.tbp_mesh(io.read_tbp_source(tbp_cube_file())[0], 2, 1).part  # welded across the creases
+    assert blender_mesh.vertex_normals_if_shared(cube.triangles, cube.corner_normals, len(cube.positions)) is None
+    cube_angle = worst_normal_angle(blender_mesh.create_mesh(cube), cube)
+    assert bracket_angle < NORMAL_ANGLE_LIMIT and cube_angle < NORMAL_ANGLE_LIMIT, (bracket_angle, cube_angle)
+    print(f"    worst loop normal vs exact: bracket {len(part.triangles)} triangles (per vertex) "
+          f"{bracket_angle:.4f} deg (Blender's own {blender_angle:.2f}), TBP cube (per corner) {cube_angle:.4f} deg")
+
+
+# -- STEP ---------------------------------------------------------------------
+
+def step_sample(name):
+    from trimkit import io
+    if not io.has_step():
+        raise Skip("this _trimkit has no read_step (built without Open CASCADE)")
+    path = pathlib.Path(ARGS.cad) / "step" / name
+    if not path.exists():
+        raise Skip(f"CAD sample step/{name} not found under {ARGS.cad}")
+    return path
+
+
+def test_step_screw_imports_and_remeshes_from_the_stored_file():
+    path = step_sample("screw.step")
+    empty_scene()
+    before = set(bpy.data.objects)
+    assert bpy.ops.import_scene.trimkit_step(filepath=str(path)) == {'FINISHED'}
+    objects = [o for o in bpy.data.objects if o not in before]
+    assert len(objects) == 1, [o.name for o in objects]
+    faces = objects[0].trimkit.faces
+    assert check_mesh(objects[0]) == set(range(faces)) and faces == 10, (faces, face_ids(objects[0]))
+    size = max(objects[0].dimensions)
+    assert 0.001 < size < 1.0, f"screw is {size} m: STEP millimetres not scaled to metres"
+    start = triangles(objects)
+    finer = retessellate_with_tolerance(objects, 0.25)
+    assert finer > start > 0, (start, finer)
+    check_mesh(objects[0])
+    print(f"    screw.step: {faces} faces, {start} triangles, {size * 1000:.1f} mm long; x0.25 tolerance {finer}")
+
+
+# -- instances ----------------------------------------------------------------
+
+def instance_groups(objects):
+    """{mesh name: [objects using it]} of the new objects."""
+    groups = {}
+    for o in objects:
+        groups.setdefault(o.data.name, []).append(o)
+    return groups
+
+
+def check_linked_duplicates(objects, per_mesh):
+    """Every mesh is used by `per_mesh` of the objects, each at its own matrix."""
+    groups = instance_groups(objects)
+    for name, users in groups.items():
+        assert len(users) == per_mesh, (name, [o.name for o in users])
+        matrices = {tuple(round(x, 6) for row in o.matrix_world for x in row) for o in users}
+        assert len(matrices) == per_mesh, f"{name}: instances at the same place"
+    return groups
+
+
+def fake_placements(io, model, scale):
+    """Three placements of body 0 (what a reader recording IGES 408 / STEP instances gives)."""
+    import numpy as np
+    out = []
+    for k, angle in enumerate((0.0, 0.5, 1.0)):
+        matrix = np.eye(4)
+        matrix[:2, :2] = [[math.cos(angle), -math.sin(angle)], [math.sin(angle), math.cos(angle)]]
+        matrix[:3, 3] = (100.0 * k * scale, 0.0, 0.0)
+        out.append(io.Placement(body=0, matrix=matrix, name=f"instance {k}"))
+    return out
+
+
+def test_instances_become_linked_duplicates_in_a_collection():
+    path = cad_sample("OCC8842_cylinder_Ideas.igs")  # one body of 3 faces
+    from trimkit import io
+    real = io.placements
+    io.placements = lambda model, scale=1.0: fake_placements(io, model, scale)
+    try:
+        empty_scene()
+        objects = import_iges(path)
+    finally:
+        io.placements = real
+    assert [o.name for o in objects] == ["instance 0", "instance 1", "instance 2"], [o.name for o in objects]
+    assert objects[0].users_collection[0].name == path.stem
+    assert abs(objects[2].matrix_world.translation.x - 0.2) < 1e-6, objects[2].matrix_world  # 200 mm
+    groups = check_linked_duplicates(objects, 3)
+    ids = check_mesh(objects[0])
+    first = triangles(objects[:1])
+    select_only(objects[1:2])  # one instance selected: its linked duplicates follow
+    objects[1].trimkit.relative = False
+    objects[1].trimkit.tolerance *= 0.25
+    assert bpy.ops.object.trimkit_retessellate() == {'FINISHED'}
+    check_linked_duplicates(objects, 3)
+    finer = triangles(objects[:1])
+    assert finer > first and len(bpy.data.meshes) == len(groups), (first, finer, len(bpy.data.meshes))
+    assert check_mesh(objects[2]) == ids
+    check_render_detail_keeps_instances_linked(objects)
+    saved = TMP / "instances" / "scene.blend"
+    saved.parent.mkdir(parents=True, exist_ok=True)
+    assert bpy.ops.wm.save_as_mainfile(filepath=str(saved)) == {'FINISHED'}
+    bpy.ops.wm.open_mainfile(filepath=str(saved))
+    objects = [bpy.data.objects[f"instance {k}"] for k in range(3)]
+    coarser = retessellate_with_tolerance(objects, 8.0) // 3
+    check_linked_duplicates(objects, 3)
+    assert coarser < finer, (finer, coarser)
+    print(f"    3 instances of 1 body, one mesh: {first} -> {finer} triangles after re-meshing one of them, "
+          f"{coarser} after reload")
+
+
+def check_render_detail_keeps_instances_linked(objects):
+    """render_pre / render_post (F12) on linked duplicates: one finer render mesh, then
+    the viewport mesh back, still shared."""
+    from trimkit import render_detail
+    viewport = objects[0].data
+    for o in objects:
+        o.trimkit.render_tolerance = o.trimkit.tolerance * 0.5
+    scene = bpy.context.scene
+    render_detail.render_pre(scene)
+    render = objects[0].data
+    assert render != viewport and all(o.data == render for o in objects)
+    assert len(render.polygons) > len(viewport.polygons)
+    render_name = render.name
+    render_detail.render_post(scene)
+    assert all(o.data == viewport for o in objects) and render_name not in bpy.data.meshes
+    for o in objects:
+        o.trimkit.render_tolerance = 0.0
+
+
+def test_iges_subfigure_instances_share_meshes():
+    path = cad_sample("bug33327.igs")
+    from trimkit import io
+    model, _ = io.read_source(path)
+    if not model.instances:
+        raise Skip("the IGES reader flattens 308/408 subfigures (Model.instances empty): "
+                   f"{len(model.faces)} faces in {len(model.bodies)} bodies")
+    empty_scene()
+    objects = import_iges(path)
+    groups = check_linked_duplicates(objects, 4)
+    assert sum(o.trimkit.faces for o in objects) == 40, sum(o.trimkit.faces for o in objects)
+    assert {o.users_collection[0].name for o in objects} == {"bug33327"}
+    for o in objects:
+        check_mesh(o)
+    first = triangles(objects)
+    finer = retessellate_with_tolerance(objects, 0.25)
+    check_linked_duplicates(objects, 4)
+    assert finer > first, (first, finer)
+    print(f"    bug33327: {len(objects)} objects sharing {len(groups)} meshes, {first} -> {finer} triangles")
+
+
 # -- TBP solids ---------------------------------------------------------------
 
 TBP_SLOPE = math.sqrt(1 + 0.1 ** 2 + 0.05 ** 2)

@@ -1,4 +1,5 @@
 """addon/trimkit/io.py (the add-on's bpy-free half): parts, per-face UVs, materials, merging."""
+import dataclasses
 import pathlib
 import sys
 
@@ -47,3 +48,70 @@ def test_stored_bytes_round_trip_and_merge_writes_glb(bracket, tmp_path):
 def test_bad_bytes_raise_naming_the_file():
     with pytest.raises(RuntimeError, match="broken.igs"):
         io.read_bytes(b"garbage", "broken.igs")
+
+
+def test_step_bytes_read_like_the_file(cad_sample):
+    if not io.has_step():
+        pytest.skip("_trimkit built without Open CASCADE")
+    path = cad_sample("step/screw.step")
+    model = io.read_bytes(pathlib.Path(path).read_bytes(), "screw.step")
+    assert len(model.faces) == len(io.native().read_step(path).faces) == 10
+    assert model.units == "mm" and model.scale_to_metres == 1e-3
+
+
+def test_bad_step_bytes_raise_naming_the_file_not_its_copy():
+    if not io.has_step():
+        with pytest.raises(RuntimeError, match="broken.step: .*without Open CASCADE"):
+            io.read_bytes(b"garbage", "broken.step")
+        return
+    with pytest.raises(RuntimeError, match="broken.step") as err:
+        io.read_bytes(b"garbage", "broken.step")
+    assert "trimkit-" not in str(err.value)
+
+
+def test_models_without_instances_have_no_placements(bracket):
+    model, _ = io.read_source(bracket)
+    assert model.instances == [] and io.placements(model, 1e-3) == []
+
+
+def test_instances_place_bodies_with_translations_in_blender_units(cad_sample):
+    model, _ = io.read_source(cad_sample("iges/bug33327.igs"))
+    if not model.instances:
+        pytest.skip("the IGES reader flattens 308/408 subfigures (Model.instances empty)")
+    placements = io.placements(model, 1e-3)
+    assert len(placements) == len(model.instances)
+    for placement, instance in zip(placements, model.instances):
+        assert 0 <= placement.body < len(model.bodies)
+        np.testing.assert_allclose(placement.matrix[:3, :3], np.asarray(instance.matrix)[:3, :3])
+        np.testing.assert_allclose(placement.matrix[:3, 3], 1e-3 * np.asarray(instance.matrix)[:3, 3])
+    result = io.tessellate(model, 0.001, relative=True, split="FACE")
+    assert {p.kind for p in result.parts} <= {"BODY", "MODEL"}, "instances place whole bodies"
+
+
+def test_step_in_metres_comes_in_millimetres(cad_sample):
+    # OCCT converts lengths to xstep.cad.unit (mm); this file's unit is the metre and its
+    # points span 0.414 m (placement points included).
+    if not io.has_step():
+        pytest.skip("_trimkit built without Open CASCADE")
+    model, _ = io.read_source(cad_sample("step/bm2_ec_lever-A.stp"))
+    assert model.units == "mm"
+    assert 0.2 < io.native().model_diagonal(model) * model.scale_to_metres < 0.414
+
+
+def test_placed_parts_move_instanced_bodies_and_keep_mirrored_ones_outward(bracket):
+    model, _ = io.read_source(bracket)
+    part = io.tessellate(model, 0.05).parts[0]
+    body = dataclasses.replace(part, kind="BODY", index=0)
+    turn = np.eye(4)
+    turn[:2, :2] = [[0.0, -1.0], [1.0, 0.0]]
+    turn[:3, 3] = (10.0, 0.0, 0.0)
+    mirror = np.diag([-1.0, 1.0, 1.0, 1.0])
+    placed = io.placed_parts([body, part], [io.Placement(0, turn, "a"), io.Placement(0, mirror, "b")])
+    assert len(placed) == 3 and placed[2] is part
+    for moved, matrix in zip(placed, (turn, mirror)):
+        np.testing.assert_allclose(moved.positions, body.positions @ matrix[:3, :3].T + matrix[:3, 3])
+        corners = moved.positions[moved.triangles]
+        face_normals = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+        agree = np.sum(face_normals * moved.corner_normals.reshape(-1, 3, 3)[:, 0], axis=1)
+        assert np.mean(agree > 0) > 0.99, "triangles turned against their normals"
+        np.testing.assert_allclose(np.linalg.norm(moved.corner_normals, axis=1), 1.0, rtol=1e-5)
