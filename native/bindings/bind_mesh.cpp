@@ -4,6 +4,7 @@
 
 #include <pybind11/stl.h>
 
+#include "mesh/edge_map.h"
 #include "mesh/mesh.h"
 #include "mesh/weld_vertices.h"
 #include "numpy_convert.h"
@@ -56,6 +57,18 @@ py::array_t<std::uint8_t> edge_flags(const mesh::Mesh& m) {
     return to_numpy_1d<std::uint8_t>(flags);
 }
 
+// (edges (k, 2) uint32, corner_edges (3m,) uint32) for Blender's edge and loop arrays.
+py::tuple edge_map_arrays(const IntArray& triangles, std::size_t vertex_count) {
+    std::vector<std::array<std::int32_t, 3>> tris;
+    rows_from_numpy(triangles, 3, -1, "edge_map: triangles", tris);
+    mesh::EdgeMap map;
+    {
+        py::gil_scoped_release release;
+        map = mesh::edge_map(tris, vertex_count);
+    }
+    return py::make_tuple(rows_to_numpy<std::uint32_t, 2>(map.edges), to_numpy_1d<std::uint32_t>(map.corner_edges));
+}
+
 }  // namespace
 
 void bind_mesh(py::module_& m) {
@@ -90,6 +103,9 @@ void bind_mesh(py::module_& m) {
         .def_property_readonly("vertex_count", &mesh::Mesh::vertex_count)
         .def_property_readonly("triangle_count", &mesh::Mesh::triangle_count);
 
+    m.def("edge_map", &edge_map_arrays, py::arg("triangles"), py::arg("vertex_count"),
+          "(edges, corner_edges): every undirected edge once as (k, 2) uint32 (smaller, larger), in "
+          "order of first use, and for each triangle corner the edge to the next corner, (3m,) uint32.");
     m.def("surface_area", &mesh::surface_area, py::arg("mesh"), "Sum of the triangles' areas.");
 
     const mesh::WeldOptions weld;
