@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "io/json_writer.h"
 #include "io/read_mesh.h"
+#include "geom/flatten_instances.h"
 #include "io/read_model.h"
 #include "tess/measure_deviation.h"
 
@@ -100,7 +101,7 @@ int run_check(const std::vector<std::string>& argv) {
     options.samples = count_option(args, "--samples", options.samples, 1);
     options.threads = count_option(args, "--threads", options.threads, 0);
     const auto start = std::chrono::steady_clock::now();
-    const geom::Model model = io::read_model(args.positionals()[0]);
+    const geom::Model model = geom::flatten_instances(io::read_model(args.positionals()[0]));
     const mesh::Mesh mesh = io::read_mesh(args.positionals()[1]);
     const tess::DeviationReport report = tess::measure_deviation(model, mesh, options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -8,6 +8,7 @@
 #include "arguments.h"
 #include "commands.h"
 #include "io/json_writer.h"
+#include "geom/flatten_instances.h"
 #include "io/read_model.h"
 #include "io/write_mesh.h"
 #include "tess/tessellate_model.h"
@@ -62,7 +63,7 @@ int run_mesh(const std::vector<std::string>& argv) {
 
     const auto start_all = Clock::now();
     auto start = Clock::now();
-    const geom::Model model = io::read_model(path);
+    const geom::Model model = geom::flatten_instances(io::read_model(path));
     const double read_seconds = seconds_since(start);
     options.tolerance = tolerance;
     if (args.flag("--relative")) {

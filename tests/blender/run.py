@@ -373,7 +373,8 @@ def test_iges_subfigure_instances_share_meshes():
     first = triangles(objects)
     finer = retessellate_with_tolerance(objects, 0.25)
     check_linked_duplicates(objects, 4)
-    assert finer > first, (first, finer)
+    # bug33327's faces are planar with straight trims: meshed exactly at any tolerance.
+    assert finer == first, (first, finer)
     print(f"    bug33327: {len(objects)} objects sharing {len(groups)} meshes, {first} -> {finer} triangles")
 
 

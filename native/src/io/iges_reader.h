@@ -117,6 +117,9 @@ public:
     // Translates a root or member entity of any kind, placed by `placement`.
     // Returns the faces added (for bodies and groups: all their faces).
     std::vector<int> translate(int de, const Eigen::Affine3d& placement, int depth);
+    // The body holding a 308 subfigure definition's faces in the definition's own
+    // coordinates, read on first use (bodies read inside it are merged into it).
+    int definition_body(int def, int depth);
 
     // RAII depth guard against deep or cyclic references.
     class Nesting {
@@ -142,6 +145,8 @@ private:
     std::map<int, std::vector<geom::NurbsCurve3d>> curve_cache_;
     std::map<int, Eigen::Affine3d> transform_cache_;
     std::map<int, int> color_cache_;
+    std::map<int, int> definition_body_;  // 308 sequence number -> body index
+    int in_definition_ = 0;               // > 0 while reading a 308's members
     std::map<int, int> unsupported_count_;
     std::vector<int> referenced_;  // per entry index: how many entities point to it
 public:

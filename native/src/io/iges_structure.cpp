@@ -1,7 +1,10 @@
 // Structure entities of IgesReader: 124 transformation matrices (chains
 // composed), 314 colours and the standard colour numbers, 406 form 15 names,
-// 402 groups, 308 subfigure definitions and 408 instances (flattened: every
-// placement's faces are copied into the model), and the per-entity dispatch.
+// 402 groups, 308 subfigure definitions and 408 instances, and the per-entity
+// dispatch. A 408 outside any definition becomes a Model::Instance of the body
+// holding its definition, which is read once; 408s nested inside a definition are
+// flattened into it (their faces copied into place).
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -101,6 +104,39 @@ std::string IgesReader::name_of(int de, const std::vector<int>& properties) {
     return e.label;
 }
 
+int IgesReader::definition_body(int def, int depth) {
+    const auto cached = definition_body_.find(def);
+    if (cached != definition_body_.end()) return cached->second;
+    definition_body_.emplace(def, -1);  // a definition placing itself reads as empty
+    const std::size_t bodies_before = model_.bodies.size();
+    ++in_definition_;
+    std::vector<int> faces;
+    try {
+        faces = translate(def, Eigen::Affine3d::Identity(), depth);
+    } catch (...) {
+        --in_definition_;
+        throw;
+    }
+    --in_definition_;
+    if (faces.empty()) return -1;
+    geom::Body body;
+    body.closed = model_.bodies.size() > bodies_before;
+    for (std::size_t b = bodies_before; b < model_.bodies.size(); ++b) body.closed = body.closed && model_.bodies[b].closed;
+    if (model_.bodies.size() == bodies_before + 1) body.name = model_.bodies.back().name;
+    model_.bodies.resize(bodies_before);
+    IgesParameterCursor c(file_, file_.index_of(def));
+    c.integer_or("depth", 0);
+    const std::string name = c.string_or("name", "");
+    if (!name.empty()) body.name = name;
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    body.faces = std::move(faces);
+    model_.bodies.push_back(std::move(body));
+    const int index = static_cast<int>(model_.bodies.size()) - 1;
+    definition_body_[def] = index;
+    return index;
+}
+
 std::vector<int> IgesReader::translate(int de, const Eigen::Affine3d& placement, int depth) {
     if (depth > kMaxIgesNesting)
         fail(de, "groups or subfigures nested deeper than " + std::to_string(kMaxIgesNesting));
@@ -148,7 +184,9 @@ std::vector<int> IgesReader::translate(int de, const Eigen::Affine3d& placement,
             local.translate(x);
             local.scale(s);
             const Eigen::Affine3d inner = placement * transform_of(de) * local;
-            faces = translate(def, inner, depth + 1);
+            if (in_definition_ > 0) return translate(def, inner, depth + 1);
+            const int body = definition_body(def, depth + 1);
+            if (body >= 0) model_.instances.push_back({body, inner, name_of(de, c.property_pointers())});
             return faces;
         }
         case 308: {

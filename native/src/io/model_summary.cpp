@@ -3,12 +3,15 @@
 #include <set>
 #include <sstream>
 
+#include "geom/flatten_instances.h"
 #include "io/json_writer.h"
 
 namespace trimkit::io {
 
-ModelSummary summarize(const geom::Model& model, const std::string& file) {
+ModelSummary summarize(const geom::Model& as_read, const std::string& file) {
+    const geom::Model model = geom::flatten_instances(as_read);
     ModelSummary s;
+    s.instances = static_cast<int>(as_read.instances.size());
     s.file = file;
     s.units = model.units;
     s.scale_to_metres = model.scale_to_metres;
@@ -46,7 +49,8 @@ std::string to_json(const ModelSummary& s) {
     }
     out << "}, \"loops\": " << s.loops << ", \"coedges\": " << s.coedges
         << ", \"shared_edges\": " << s.shared_edges << ", \"bodies\": " << s.bodies
-        << ", \"closed_bodies\": " << s.closed_bodies << ", \"colors\": " << s.colors
+        << ", \"closed_bodies\": " << s.closed_bodies << ", \"instances\": " << s.instances
+        << ", \"colors\": " << s.colors
         << ", \"warnings\": [";
     sep = "";
     for (const std::string& w : s.warnings) {
@@ -69,6 +73,7 @@ std::string to_text(const ModelSummary& s) {
         << "coedges:         " << s.coedges << "\n"
         << "shared edges:    " << s.shared_edges << "\n"
         << "bodies:          " << s.bodies << " (" << s.closed_bodies << " closed)\n"
+        << "instances:       " << s.instances << "\n"
         << "colours:         " << s.colors << "\n"
         << "warnings:        " << s.warnings.size() << "\n";
     for (const std::string& w : s.warnings) out << "  " << w << "\n";

@@ -21,15 +21,18 @@ struct ModelSummary {
     int shared_edges = 0;  // edges used by at least one coedge
     int bodies = 0;
     int closed_bodies = 0;
+    int instances = 0;     // placements of bodies in the file (subfigures); 0 without
     int colors = 0;
     std::vector<std::string> warnings;  // model warnings, then "face N: ..." ones
 };
 
+// Counts are of the model with its instances applied (every placed face), so they
+// agree with what `trimkit mesh` meshes; `instances` tells how many placements.
 ModelSummary summarize(const geom::Model& model, const std::string& file);
 
 // One JSON object with the keys of ModelSummary (`file`, `units`,
 // `scale_to_metres`, `faces`, `surfaces`, `loops`, `coedges`, `shared_edges`,
-// `bodies`, `closed_bodies`, `colors`, `warnings`).
+// `bodies`, `closed_bodies`, `instances`, `colors`, `warnings`).
 std::string to_json(const ModelSummary& summary);
 
 // The same for a person: one "key: value" line per field, warnings indented.

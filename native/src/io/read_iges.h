@@ -1,7 +1,7 @@
 // Reading IGES 5.3 files into a geom::Model: trimmed and bounded surfaces,
 // B-rep solids with shared edges, surfaces with their natural boundary, 124
-// transforms applied and 308/408 subfigure instances flattened (Model::faces
-// holds every placement). Lengths stay in the file's units (Model::units,
+// transforms applied, and 308/408 subfigures as Model::instances of one body per
+// definition (geom::flatten_instances gives every placement's faces). Lengths stay in the file's units (Model::units,
 // Model::scale_to_metres).
 #pragma once
 

@@ -2,6 +2,7 @@
 // bad entities, hostile input) and from the CAD samples (face counts against
 // Open CASCADE, evaluation inside the bounding box, closed loops, units,
 // parameter curves lying on their model-space curves).
+#include "geom/flatten_instances.h"
 #include "io/read_iges.h"
 
 #include <gtest/gtest.h>
@@ -59,15 +60,40 @@ TEST(ReadIges, TransformChainsAreComposed) {
     EXPECT_TRUE(m.faces[0].surface.evaluate(0, 0).isApprox(Eigen::Vector3d(1, 0, 5)));
 }
 
-TEST(ReadIges, SubfigureInstancesAreFlattened) {
+TEST(ReadIges, SubfigureInstancesPlaceOneDefinition) {
     IgesTextBuilder b;
     const int surf = b.add({128, plane_128_params(), 0, 0, "00000000"});
     const int def = b.add({308, "0,3Hdef,1," + std::to_string(surf) + ";", 0, 0, "00020201"});
     b.add({408, std::to_string(def) + ",0.,0.,0.,1.;"});
     b.add({408, std::to_string(def) + ",100.,0.,0.,2.;"});
     const geom::Model m = read_iges_text(b.text(), "sub.igs");
-    ASSERT_EQ(m.faces.size(), 2u);  // the 128 only through its two placements
-    EXPECT_TRUE(m.faces[1].surface.evaluate(1, 1).isApprox(Eigen::Vector3d(120, 20, 0)));
+    ASSERT_EQ(m.faces.size(), 1u);  // the 128 once, in the definition's coordinates
+    ASSERT_EQ(m.bodies.size(), 1u);
+    EXPECT_EQ(m.bodies[0].name, "def");
+    EXPECT_TRUE(m.free_faces.empty());
+    ASSERT_EQ(m.instances.size(), 2u);
+    EXPECT_TRUE((m.instances[1].transform * m.faces[0].surface.evaluate(1, 1)).isApprox(Eigen::Vector3d(120, 20, 0)));
+    const geom::Model flat = geom::flatten_instances(m);
+    ASSERT_EQ(flat.faces.size(), 2u);  // the 128 through its two placements
+    EXPECT_TRUE(flat.faces[1].surface.evaluate(1, 1).isApprox(Eigen::Vector3d(120, 20, 0)));
+}
+
+// A 408 inside a definition is flattened into it; the outer 408 is the instance.
+TEST(ReadIges, NestedSubfiguresFlattenIntoTheOuterDefinition) {
+    IgesTextBuilder b;
+    const int surf = b.add({128, plane_128_params(), 0, 0, "00000000"});
+    const int inner = b.add({308, "0,5Hinner,1," + std::to_string(surf) + ";", 0, 0, "00020201"});
+    const int place = b.add({408, std::to_string(inner) + ",10.,0.,0.,1.;", 0, 0, "00020000"});
+    const int outer = b.add({308, "1,5Houter,2," + std::to_string(surf) + "," + std::to_string(place) + ";", 0, 0,
+                             "00020201"});
+    b.add({408, std::to_string(outer) + ",0.,50.,0.,1.;"});
+    const geom::Model m = read_iges_text(b.text(), "nested.igs");
+    ASSERT_EQ(m.instances.size(), 1u);
+    ASSERT_EQ(m.bodies.size(), 1u);
+    EXPECT_EQ(m.bodies[0].faces.size(), 2u);
+    const geom::Model flat = geom::flatten_instances(m);
+    ASSERT_EQ(flat.faces.size(), 2u);
+    EXPECT_TRUE(flat.faces[1].surface.evaluate(0, 0).isApprox(Eigen::Vector3d(10, 50, 0)));
 }
 
 TEST(ReadIges, TrimmedSurfaceWithParameterCurves) {
@@ -215,15 +241,47 @@ TEST(ReadIgesSamples, FaceCountsMatchOpenCascade) {
         int expected = occt;
         // OCCT fails to read the 308 D47 of bug33327.igs (its name is the empty
         // Hollerith "0H"), so it transfers the 186 D45 inside it once more as a
-        // root: 40 placements + 1. The file itself places 40 faces.
+        // root: 40 placements + 1. The file itself places 40 faces (OCCT copies
+        // every placement; trimkit keeps instances, so the placed faces are counted).
         if (file == "bug33327.igs") expected = 40;
         SCOPED_TRACE(file);
         try {
-            const geom::Model m = read_iges(dir + "/" + file);
+            const geom::Model m = geom::flatten_instances(read_iges(dir + "/" + file));
             EXPECT_EQ(static_cast<int>(m.faces.size()), expected);
         } catch (const geom::ReadError& e) {
             ADD_FAILURE() << e.what();
         }
+    }
+}
+
+// bug33327.igs places one 10-face subfigure definition 4 times (308 / 408): read
+// once, as one body with 4 instances; flattened, 4 copies at distinct places.
+TEST(ReadIgesSamples, SubfigureInstancesShareOneBody) {
+    TRIMKIT_CAD_SAMPLE(path, "iges/bug33327.igs");
+    const geom::Model m = read_iges(path);
+    ASSERT_EQ(m.instances.size(), 4u);
+    ASSERT_EQ(m.bodies.size(), 1u);
+    EXPECT_EQ(m.faces.size(), 10u);
+    EXPECT_EQ(m.bodies[0].faces.size(), 10u);
+    for (const geom::Instance& instance : m.instances) EXPECT_EQ(instance.body, 0);
+    const geom::Model flat = geom::flatten_instances(m);
+    ASSERT_EQ(flat.faces.size(), 40u);
+    ASSERT_EQ(flat.bodies.size(), 4u);
+    EXPECT_EQ(flat.edges.size(), 4 * m.edges.size());
+    std::vector<Eigen::Vector3d> centres;
+    for (const geom::Body& body : flat.bodies) {
+        Eigen::AlignedBox3d box;
+        for (int f : body.faces) box.extend(flat.faces[f].surface.control_box());
+        for (const Eigen::Vector3d& c : centres) EXPECT_GT((c - box.center()).norm(), 1.0);
+        centres.push_back(box.center());
+        // Each copy is the definition moved by its instance's transform.
+        const int k = static_cast<int>(centres.size()) - 1;
+        const geom::NurbsSurface& original = m.faces[m.bodies[0].faces[0]].surface;
+        const auto [u0, u1] = original.domain_u();
+        const auto [v0, v1] = original.domain_v();
+        const double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1);
+        EXPECT_LE((flat.faces[body.faces[0]].surface.evaluate(u, v) -
+                   m.instances[k].transform * original.evaluate(u, v)).norm(), 1e-9);
     }
 }
 
