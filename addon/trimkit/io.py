@@ -215,6 +215,14 @@ def part_faces(model, kind, index):
     return None
 
 
+def measure(model, positions, triangles, face_ids, faces, samples=4):
+    """Deviation report (native DeviationReport, model units) of a mesh in model units
+    from the model's faces `faces`; its face ids must be among them."""
+    mesh = native().Mesh(positions=np.asarray(positions, np.float64), triangles=np.asarray(triangles, np.int32),
+                         face_ids=np.asarray(face_ids, np.int32))
+    return native().measure_deviation(model, mesh, faces=list(faces), samples=samples)
+
+
 def part_name(model, kind, index, stem):
     if kind == "FACE":
         return model.faces[index].name or f"Face.{index}"

@@ -1,5 +1,5 @@
 """Operators: File > Import > IGES (and STEP when the module has it) and TBP,
-re-meshing selected trimkit objects, a closed mesh to a TBP solid, and trimming
+re-meshing and checking selected trimkit objects, a closed mesh to a TBP solid, and trimming
 one TBP object by another. Each gathers its properties and delegates to
 importer.py or tbp_objects.py."""
 import math
@@ -8,7 +8,7 @@ import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
 from bpy_extras.io_utils import ImportHelper
 
-from . import importer, io, properties, tbp_objects
+from . import importer, io, mesh_check, properties, tbp_objects
 
 SPLIT_ITEMS = [
     ('BODY', "Per Body", "One object per body (solid or shell); faces in no body together"),
@@ -130,6 +130,34 @@ class OBJECT_OT_trimkit_retessellate(bpy.types.Operator):
                 self.report({'WARNING'}, f"face {face} not meshed: {reason}")
         triangles = sum(o.trimkit.triangles for o in objects)
         self.report({'INFO'}, f"{len(objects)} objects re-meshed, {triangles} triangles")
+        return {'FINISHED'}
+
+
+class OBJECT_OT_trimkit_check(bpy.types.Operator):
+    """Measure how far the selected trimkit objects' meshes are from their exact CAD faces and colour the faces by it"""
+    bl_idname = "object.trimkit_check"
+    bl_label = "Check Deviation"
+    bl_options = {'REGISTER', 'UNDO'}
+
+    @classmethod
+    def poll(cls, context):
+        return any(importer.is_trimkit(o) and o.trimkit.kind == 'CAD' for o in context.selected_objects)
+
+    def execute(self, context):
+        objects = [o for o in context.selected_objects if importer.is_trimkit(o) and o.trimkit.kind == 'CAD']
+        wm = context.window_manager
+        wm.progress_begin(0.0, 1.0)
+        try:
+            for k, obj in enumerate(objects):
+                report, tolerance = mesh_check.check_object(obj)
+                level = 'INFO' if max(report.mesh_to_surface, report.surface_to_mesh) <= tolerance else 'WARNING'
+                self.report({level}, f"{obj.name}: {obj.trimkit.check_report}")
+                wm.progress_update((k + 1) / len(objects))
+        except (RuntimeError, ValueError, ImportError) as err:
+            self.report({'ERROR'}, str(err))
+            return {'CANCELLED'}
+        finally:
+            wm.progress_end()
         return {'FINISHED'}
 
 
@@ -255,7 +283,8 @@ def menu_object(self, context):
 
 def classes():
     """The operator classes to register: STEP only when _trimkit can read it."""
-    found = [IMPORT_SCENE_OT_trimkit_iges, OBJECT_OT_trimkit_retessellate, IMPORT_SCENE_OT_trimkit_tbp,
+    found = [IMPORT_SCENE_OT_trimkit_iges, OBJECT_OT_trimkit_retessellate, OBJECT_OT_trimkit_check,
+             IMPORT_SCENE_OT_trimkit_tbp,
              OBJECT_OT_trimkit_mesh_to_tbp, OBJECT_OT_trimkit_trim]
     if io.has_step():
         found.insert(1, IMPORT_SCENE_OT_trimkit_step)

@@ -31,12 +31,16 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
         col.prop(props, "trim_method")
         col.prop(props, "smooth")
         col.prop(props, "exact_normals")
-        layout.operator("object.trimkit_retessellate", icon='FILE_REFRESH')
+        row = layout.row()
+        row.operator("object.trimkit_retessellate", icon='FILE_REFRESH')
+        row.operator("object.trimkit_check", icon='VIEWZOOM')
         box = layout.box()
         box.label(text=f"{props.faces} faces, {props.triangles} triangles, {props.seconds:.2f} s")
         if props.failed_faces:
             box.label(text=f"{props.failed_faces} failed faces", icon='ERROR')
             box.label(text=props.failed_report[:120])
+        if props.check_report:
+            box.label(text=props.check_report, icon='CHECKMARK')
 
     @staticmethod
     def draw_tbp(props, layout):

@@ -77,6 +77,7 @@ class TRIMKIT_PG_object(bpy.types.PropertyGroup):
     seconds: FloatProperty(name="Seconds", description="Time of the last tessellation", precision=3)
     failed_faces: IntProperty(name="Failed Faces")
     failed_report: StringProperty(name="Failures", description="Failed faces by id and reason")
+    check_report: StringProperty(name="Check", description="Deviation from the exact faces at the last check")
 
 
 def register():

@@ -3,6 +3,9 @@
 // trim_method "bezier3d" | "yang" | "param".
 #include <pybind11/stl.h>
 
+#include "geom/error.h"
+#include "geom/select_faces.h"
+#include "tess/measure_deviation.h"
 #include "tess/tessellate_model.h"
 #include "numpy_convert.h"
 
@@ -45,6 +48,26 @@ tess::TessellationOptions make_options(double tolerance, double angle, const std
     options.trim_method = method_from_name(trim_method);
     options.threads = threads;
     return options;
+}
+
+// measure_deviation over `faces` of the model only (all when empty): the mesh's face
+// ids name model faces and are renumbered into the selection.
+tess::DeviationReport deviation_of_faces(const geom::Model& model, const mesh::Mesh& mesh,
+                                         const std::vector<int>& faces, int samples) {
+    tess::DeviationOptions options;
+    options.samples = samples;
+    if (faces.empty()) return tess::measure_deviation(model, mesh, options);
+    const geom::Model part = geom::select_faces(model, faces);
+    std::vector<int> position(model.faces.size(), -1);
+    for (std::size_t k = 0; k < faces.size(); ++k) position[faces[k]] = static_cast<int>(k);
+    mesh::Mesh renumbered = mesh;
+    for (auto& id : renumbered.face_ids) {
+        if (id < 0 || id >= static_cast<int>(position.size()) || position[id] < 0)
+            throw geom::InvalidInput("measure_deviation: the mesh has face id " + std::to_string(id) +
+                                     ", which is not among the faces measured");
+        id = position[id];
+    }
+    return tess::measure_deviation(part, renumbered, options);
 }
 
 }  // namespace
@@ -91,6 +114,22 @@ void bind_tess(py::module_& m) {
           py::arg("options") = tess::TessellationOptions{}, py::call_guard<py::gil_scoped_release>(),
           "Mesh every face of the model (faces that fail are listed in failed_faces). "
           "ValueError for invalid options.");
+    py::class_<tess::DeviationReport>(m, "DeviationReport",
+                                      "Two-sided deviation of a mesh from the exact trimmed faces (model units).")
+        .def_property_readonly("mesh_to_surface", [](const tess::DeviationReport& r) { return r.mesh_to_surface.max; })
+        .def_property_readonly("surface_to_mesh", [](const tess::DeviationReport& r) { return r.surface_to_mesh.max; })
+        .def_readonly("area_mesh", &tess::DeviationReport::area_mesh)
+        .def_readonly("area_exact", &tess::DeviationReport::area_exact)
+        .def_readonly("area_ratio", &tess::DeviationReport::area_ratio)
+        .def_readonly("open_edges", &tess::DeviationReport::open_edges)
+        .def_readonly("face_mesh_to_surface", &tess::DeviationReport::face_mesh_to_surface,
+                      "per measured face (in the order of `faces`): max mesh -> surface distance, NaN without triangles")
+        .def_readonly("face_surface_to_mesh", &tess::DeviationReport::face_surface_to_mesh)
+        .def_readonly("warnings", &tess::DeviationReport::warnings);
+    m.def("measure_deviation", &deviation_of_faces, py::arg("model"), py::arg("mesh"),
+          py::arg("faces") = std::vector<int>{}, py::arg("samples") = 4, py::call_guard<py::gil_scoped_release>(),
+          "What `trimkit check` measures, over the listed model faces (all when empty); the mesh's "
+          "face ids must be among them. ValueError for an invalid mesh or face list.");
     m.def("model_diagonal", &tess::model_diagonal, py::arg("model"),
           py::call_guard<py::gil_scoped_release>(),
           "Diagonal of the trimmed faces' bounding box: what a relative tolerance is a fraction of.");

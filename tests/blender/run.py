@@ -140,6 +140,47 @@ def test_bracket_one_object_covers_every_face_and_remeshes_both_ways():
     print(f"    bracket: {start} triangles, x0.1 tolerance {finer}, x10 {coarser}")
 
 
+def test_check_colours_faces_by_deviation_and_flags_a_moved_vertex():
+    import numpy as np
+    path = cad_sample("hammer.iges")
+    empty_scene()
+    objects = import_iges(path)
+    for o in objects:
+        o.select_set(True)
+    assert bpy.ops.object.trimkit_check() == {'FINISHED'}
+    worst = 0.0
+    for o in objects:
+        deviation = read_face_values(o, "trimkit_deviation")
+        assert len(deviation) == len(o.data.polygons)
+        assert o.data.attributes["trimkit_check"].domain == 'CORNER'
+        assert "T, surface->mesh" in o.trimkit.check_report, o.trimkit.check_report
+        worst = max(worst, deviation.max() / o.trimkit.tolerance)
+    assert 0.0 < worst <= 1.0, worst
+    # One vertex pushed 5 tolerances along its normal: its face goes beyond the tolerance.
+    obj = max(objects, key=lambda o: len(o.data.vertices))
+    me = obj.data
+    v = me.vertices[len(me.vertices) // 2]
+    v.co = v.co + v.normal * (5.0 * obj.trimkit.tolerance)
+    me.update()
+    face = read_face_values(obj, "cad_face")[[p.index for p in me.polygons if v.index in p.vertices][0]]
+    assert bpy.ops.object.trimkit_check() == {'FINISHED'}
+    deviation = read_face_values(obj, "trimkit_deviation")
+    moved = deviation[read_face_values(obj, "cad_face") == face].max() / obj.trimkit.tolerance
+    assert moved > 4.0, moved
+    colors = np.empty(4 * len(me.loops), np.float32)
+    me.attributes["trimkit_check"].data.foreach_get("color", colors)
+    assert colors.reshape(-1, 4)[:, 0].max() == 1.0  # red somewhere
+    print(f"    hammer check: worst {worst:.2f} T; a vertex moved 5 T -> its face {moved:.2f} T")
+
+
+def read_face_values(obj, name):
+    import numpy as np
+    attribute = obj.data.attributes[name]
+    values = np.empty(len(obj.data.polygons), np.float32 if attribute.data_type == 'FLOAT' else np.int32)
+    attribute.data.foreach_get("value", values)
+    return values
+
+
 def test_bearing_imports_with_every_face_covered():
     path = cad_sample("bearing.iges")
     empty_scene()

@@ -115,3 +115,20 @@ def test_placed_parts_move_instanced_bodies_and_keep_mirrored_ones_outward(brack
         agree = np.sum(face_normals * moved.corner_normals.reshape(-1, 3, 3)[:, 0], axis=1)
         assert np.mean(agree > 0) > 0.99, "triangles turned against their normals"
         np.testing.assert_allclose(np.linalg.norm(moved.corner_normals, axis=1), 1.0, rtol=1e-5)
+
+
+def test_measure_one_face_part_within_tolerance_and_a_moved_vertex_beyond(bracket):
+    model, _ = io.read_source(bracket)
+    result = io.tessellate(model, 0.05, split="FACE")
+    part = result.parts[1]  # face 1 alone: face 0 is not measured
+    report = io.measure(model, part.positions, part.triangles, part.face_ids, [1])
+    assert 0.0 < max(report.mesh_to_surface, report.surface_to_mesh) <= result.tolerance
+    assert report.area_ratio == pytest.approx(1.0, abs=2e-3)
+    assert len(report.face_mesh_to_surface) == 1
+    moved = part.positions.copy()
+    moved[len(moved) // 2] += 10.0 * result.tolerance * part.corner_normals[
+        np.argmax(part.triangles.ravel() == len(moved) // 2)]
+    far = io.measure(model, moved, part.triangles, part.face_ids, [1])
+    assert far.mesh_to_surface > 5.0 * result.tolerance
+    with pytest.raises(ValueError, match="not among the faces measured"):
+        io.measure(model, part.positions, part.triangles, part.face_ids, [0])
