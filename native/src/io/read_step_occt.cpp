@@ -1,5 +1,5 @@
-// read_step through Open CASCADE (built only with TRIMKIT_WITH_OCCT): STEPControl_Reader
-// gives a TopoDS_Shape, BRepBuilderAPI_NurbsConvert turns every surface and pcurve into
+// read_step through Open CASCADE (built only with TRIMKIT_WITH_OCCT): STEPCAFControl_Reader
+// gives a TopoDS_Shape (the document's free shapes) with names and colours, BRepBuilderAPI_NurbsConvert turns every surface and pcurve into
 // a B-spline, and each face occurrence (TopExp_Explorer, so instanced parts count once
 // per placement) becomes a geom::Face with its placement applied to the control points.
 // Edges are shared through a TopTools_IndexedMapOfShape (same TShape and location).
@@ -21,7 +21,18 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
-#include <STEPControl_Reader.hxx>
+#include <BRep_Builder.hxx>
+#include <Quantity_Color.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <TCollection_AsciiString.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <TopoDS_Compound.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_ColorTool.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -36,7 +47,9 @@
 #include <gp_Trsf.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -325,6 +338,64 @@ std::string failure_text(const Standard_Failure& e) {
     return std::string(e.DynamicType()->Name()) + (text && *text ? std::string(": ") + text : "");
 }
 
+// Names and colours of the document's shapes (XCAF), turned into Model::colors.
+class StepStyles {
+public:
+    explicit StepStyles(const Handle(TDocStd_Document)& doc)
+        : shapes_(XCAFDoc_DocumentTool::ShapeTool(doc->Main())),
+          colors_(XCAFDoc_DocumentTool::ColorTool(doc->Main())) {}
+
+    // The free shapes as one shape (a compound when there are several).
+    TopoDS_Shape root() const {
+        TDF_LabelSequence labels;
+        shapes_->GetFreeShapes(labels);
+        if (labels.Length() == 1) return shapes_->GetShape(labels.Value(1));
+        TopoDS_Compound all;
+        BRep_Builder builder;
+        builder.MakeCompound(all);
+        for (int i = 1; i <= labels.Length(); ++i) builder.Add(all, shapes_->GetShape(labels.Value(i)));
+        return all;
+    }
+
+    // The name of the shape's label (an instance's own name, else its part's); "" if none.
+    std::string name(const TopoDS_Shape& shape) const {
+        TDF_Label label;
+        if (!shapes_->Search(shape, label)) return {};
+        std::string own = label_name(label);
+        TDF_Label part;
+        if (own.empty() && XCAFDoc_ShapeTool::GetReferredShape(label, part)) own = label_name(part);
+        return own;
+    }
+
+    // Index into model.colors of the shape's surface (or generic) colour, -1 if none;
+    // equal colours share one entry.
+    int color(const TopoDS_Shape& shape, geom::Model& model) {
+        Quantity_Color c;
+        if (!colors_->GetColor(shape, XCAFDoc_ColorSurf, c) && !colors_->GetColor(shape, XCAFDoc_ColorGen, c))
+            return -1;
+        double r = 0, g = 0, b = 0;
+        c.Values(r, g, b, Quantity_TOC_sRGB);  // the file's own numbers
+        const std::array<double, 3> rgb{r, g, b};
+        const auto found = index_.find(rgb);
+        if (found != index_.end()) return found->second;
+        geom::Color color;
+        color.rgb = rgb;
+        model.colors.push_back(color);
+        return index_[rgb] = static_cast<int>(model.colors.size()) - 1;
+    }
+
+private:
+    static std::string label_name(const TDF_Label& label) {
+        Handle(TDataStd_Name) name;
+        if (!label.FindAttribute(TDataStd_Name::GetID(), name)) return {};
+        return TCollection_AsciiString(name->Get()).ToCString();  // UTF-8
+    }
+
+    Handle(XCAFDoc_ShapeTool) shapes_;
+    Handle(XCAFDoc_ColorTool) colors_;
+    std::map<std::array<double, 3>, int> index_;
+};
+
 }  // namespace
 
 bool step_supported() { return true; }
@@ -333,18 +404,23 @@ geom::Model read_step(const std::string& path) {
     silence_occt_stdout();
     TopoDS_Shape original;
     TopoDS_Shape shape;
+    Handle(TDocStd_Document) doc;
     try {
-        STEPControl_Reader reader;
+        XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+        STEPCAFControl_Reader reader;
+        reader.SetColorMode(true);
+        reader.SetNameMode(true);
         if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
             throw geom::ReadError(path, 0, "Open CASCADE cannot read this file as STEP");
-        reader.TransferRoots();
-        original = reader.OneShape();
+        if (!reader.Transfer(doc)) throw geom::ReadError(path, 0, "Open CASCADE cannot transfer the STEP file");
+        original = StepStyles(doc).root();
         if (original.IsNull()) throw geom::ReadError(path, 0, "the STEP file gives no shape");
         BRepBuilderAPI_NurbsConvert convert(original);
         shape = convert.Shape();
     } catch (const Standard_Failure& e) {
         throw geom::ReadError(path, 0, "Open CASCADE failed: " + failure_text(e));
     }
+    StepStyles styles(doc);
 
     geom::Model model;
     model.units = "mm";  // OCCT converts lengths to xstep.cad.unit, millimetres by default
@@ -385,6 +461,7 @@ geom::Model read_step(const std::string& path) {
             if (gap > kLoopGapMax)
                 throw std::runtime_error("trim loops are not closed (relative gap " +
                                          geom::format_value(gap) + ")");
+            if (!was.IsNull()) converted.color = styles.color(was, model);
             model.faces.push_back(std::move(converted));
             model.faces.back().source_entity = occurrence + 1;
             occurrence_to_face.push_back(static_cast<int>(model.faces.size()) - 1);
@@ -421,19 +498,30 @@ geom::Model read_step(const std::string& path) {
             }
         return ids;
     };
+    // Bodies are named and coloured from the shapes before conversion, visited in the
+    // same order; faces without a colour of their own take their body's.
+    auto add_body = [&](const TopoDS_Shape& part, const TopoDS_Shape& was, const std::string& kind, bool closed) {
+        geom::Body body;
+        body.name = was.IsNull() ? std::string() : styles.name(was);
+        if (body.name.empty()) body.name = kind + " " + std::to_string(model.bodies.size() + 1);
+        body.closed = closed;
+        body.faces = faces_of(part);
+        const int color = was.IsNull() ? -1 : styles.color(was, model);
+        for (int f : body.faces)
+            if (model.faces[f].color < 0) model.faces[f].color = color;
+        if (!body.faces.empty()) model.bodies.push_back(std::move(body));
+    };
+    TopExp_Explorer was_solid(original, TopAbs_SOLID);
     for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) {
-        geom::Body body;
-        body.name = "solid " + std::to_string(model.bodies.size() + 1);
-        body.closed = true;
-        body.faces = faces_of(it.Current());
-        if (!body.faces.empty()) model.bodies.push_back(std::move(body));
+        const TopoDS_Shape was = was_solid.More() ? was_solid.Current() : TopoDS_Shape();
+        if (was_solid.More()) was_solid.Next();
+        add_body(it.Current(), was, "solid", true);
     }
+    TopExp_Explorer was_shell(original, TopAbs_SHELL, TopAbs_SOLID);
     for (TopExp_Explorer it(shape, TopAbs_SHELL, TopAbs_SOLID); it.More(); it.Next()) {
-        geom::Body body;
-        body.name = "shell " + std::to_string(model.bodies.size() + 1);
-        body.closed = BRep_Tool::IsClosed(it.Current());
-        body.faces = faces_of(it.Current());
-        if (!body.faces.empty()) model.bodies.push_back(std::move(body));
+        const TopoDS_Shape was = was_shell.More() ? was_shell.Current() : TopoDS_Shape();
+        if (was_shell.More()) was_shell.Next();
+        add_body(it.Current(), was, "shell", BRep_Tool::IsClosed(it.Current()));
     }
     for (size_t k = 0; k < occurrences.size(); ++k)
         if (!used[k] && occurrence_to_face[k] >= 0) model.free_faces.push_back(occurrence_to_face[k]);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -118,6 +119,26 @@ TEST(ReadStep, FacesEvaluateFiniteAndLoopsClose) {
             }
         }
     }
+}
+
+// as1-oc-214-mat.stp (an AP214 assembly): bodies carry their parts' product names and
+// faces the style colours (XCAF), equal colours shared.
+TEST(ReadStep, AssemblyPartsAreNamedAndColoured) {
+    REQUIRE_STEP_FILE(path, "as1-oc-214-mat.stp");
+    const geom::Model m = read_step(path);
+    ASSERT_EQ(m.bodies.size(), 18u);
+    std::map<std::string, int> names;
+    for (const geom::Body& b : m.bodies) ++names[b.name];
+    EXPECT_EQ(names, (std::map<std::string, int>{{"bolt", 6}, {"l-bracket", 2}, {"nut", 8}, {"plate_1", 1},
+                                                 {"rod", 1}}));
+    ASSERT_EQ(m.colors.size(), 4u);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(m.colors[0].rgb[k], k == 0 ? 1.0 : 0.0, 1e-6);  // red
+    int coloured = 0;
+    for (const geom::Face& f : m.faces) {
+        ASSERT_LT(f.color, static_cast<int>(m.colors.size()));
+        coloured += f.color >= 0 ? 1 : 0;
+    }
+    EXPECT_EQ(coloured, 142);
 }
 
 TEST(ReadStep, ScrewSharesEdgesAndPlacesCurvesOnSurfaces) {
