@@ -47,7 +47,8 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
 
 // Diagonal of the tight bounding box of the trimmed faces, from points on them
 // (trim curves and (u,v) grid samples inside the trim loops), not control points:
-// the length a --relative tolerance is a fraction of. 0 for a model without faces.
+// the length a --relative tolerance is a fraction of, with the model's instances
+// placed (the whole assembly). 0 for a model without faces.
 double model_diagonal(const geom::Model& model);
 
 }  // namespace trimkit::tess

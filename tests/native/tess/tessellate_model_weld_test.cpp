@@ -12,6 +12,8 @@
 
 #include "geom/model.h"
 #include "io/read_model.h"
+#include "geom/flatten_instances.h"
+#include "geom/select_faces.h"
 #include "mesh/open_edges.h"
 #include "tess/measure_deviation.h"
 #include "tess/snap_boundary_vertices.h"
@@ -187,6 +189,17 @@ TEST_P(ClosedAfterWeld, NoOpenEdges) {
 
 INSTANTIATE_TEST_SUITE_P(Issue3, ClosedAfterWeld,
                          ::testing::Values("occ22470.igs", "OCC8842_cone_CATIA.igs", "OCC17026-1.igs", "hammer.iges"));
+
+// bug33327.igs places one definition 4 times: a relative tolerance is a fraction of
+// the whole assembly, as the command line (which flattens) sees it.
+TEST(ModelDiagonal, SpansEveryInstance) {
+    TRIMKIT_CAD_SAMPLE(path, "iges/bug33327.igs");
+    const geom::Model model = io::read_model(path);
+    ASSERT_FALSE(model.instances.empty());
+    const double placed = model_diagonal(geom::flatten_instances(model));
+    EXPECT_DOUBLE_EQ(model_diagonal(model), placed);
+    EXPECT_GT(placed, 1.5 * model_diagonal(geom::select_faces(model, model.bodies[0].faces)));
+}
 
 class DeviationWithinTolerance : public ::testing::TestWithParam<const char*> {};
 
