@@ -1,7 +1,6 @@
 // Bindings for native/src/io: reading models and their summaries.
 #include <pybind11/stl.h>
 
-#include "io/corner_attributes.h"
 #include "io/model_summary.h"
 #include "io/read_iges.h"
 #include "io/read_model.h"
@@ -18,18 +17,6 @@ geom::Model read_model_bytes(const py::bytes& data, const std::string& name) {
     std::string text = data;
     py::gil_scoped_release release;
     return io::read_iges_text(text, name);
-}
-
-// (m, 3, 2) corner uvs and (m, 3, 3) corner normals.
-py::tuple corner_attributes(const geom::Model& model, const mesh::Mesh& mesh) {
-    io::CornerAttributes corners;
-    {
-        py::gil_scoped_release release;
-        corners = io::corner_attributes(model, mesh);
-    }
-    const auto T = static_cast<py::ssize_t>(mesh.triangle_count());
-    return py::make_tuple(rows_to_numpy<double, 2>(corners.uvs).reshape({T, py::ssize_t{3}, py::ssize_t{2}}),
-                          rows_to_numpy<double, 3>(corners.normals).reshape({T, py::ssize_t{3}, py::ssize_t{3}}));
 }
 
 }  // namespace
@@ -51,8 +38,6 @@ void bind_io(py::module_& m) {
     m.def("write_mesh", &io::write_mesh, py::arg("path"), py::arg("mesh"),
           py::call_guard<py::gil_scoped_release>(),
           "Write a Mesh as .obj, .ply, .stl or .glb (by extension).");
-    m.def("corner_attributes", &corner_attributes, py::arg("model"), py::arg("mesh"),
-          "Per-corner (u,v) in each triangle's own face, (m, 3, 2), and unit normals, (m, 3, 3).");
 
     py::class_<io::ModelSummary>(m, "ModelSummary")
         .def_readonly("file", &io::ModelSummary::file)

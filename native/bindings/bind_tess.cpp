@@ -5,6 +5,7 @@
 
 #include "geom/error.h"
 #include "geom/select_faces.h"
+#include "tess/corner_attributes.h"
 #include "tess/measure_deviation.h"
 #include "tess/tessellate_model.h"
 #include "numpy_convert.h"
@@ -70,6 +71,18 @@ tess::DeviationReport deviation_of_faces(const geom::Model& model, const mesh::M
     return tess::measure_deviation(part, renumbered, options);
 }
 
+// (m, 3, 2) corner uvs and (m, 3, 3) corner normals.
+py::tuple corner_attributes(const geom::Model& model, const mesh::Mesh& mesh) {
+    tess::CornerAttributes corners;
+    {
+        py::gil_scoped_release release;
+        corners = tess::corner_attributes(model, mesh);
+    }
+    const auto T = static_cast<py::ssize_t>(mesh.triangle_count());
+    return py::make_tuple(rows_to_numpy<double, 2>(corners.uvs).reshape({T, py::ssize_t{3}, py::ssize_t{2}}),
+                          rows_to_numpy<double, 3>(corners.normals).reshape({T, py::ssize_t{3}, py::ssize_t{3}}));
+}
+
 }  // namespace
 
 void bind_tess(py::module_& m) {
@@ -130,6 +143,8 @@ void bind_tess(py::module_& m) {
           py::arg("faces") = std::vector<int>{}, py::arg("samples") = 4, py::call_guard<py::gil_scoped_release>(),
           "What `trimkit check` measures, over the listed model faces (all when empty); the mesh's "
           "face ids must be among them. ValueError for an invalid mesh or face list.");
+    m.def("corner_attributes", &corner_attributes, py::arg("model"), py::arg("mesh"),
+          "Per-corner (u,v) in each triangle's own face, (m, 3, 2), and unit normals, (m, 3, 3).");
     m.def("model_diagonal", &tess::model_diagonal, py::arg("model"),
           py::call_guard<py::gil_scoped_release>(),
           "Diagonal of the trimmed faces' bounding box: what a relative tolerance is a fraction of.");

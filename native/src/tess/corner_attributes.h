@@ -12,7 +12,7 @@
 #include "geom/model.h"
 #include "mesh/mesh.h"
 
-namespace trimkit::io {
+namespace trimkit::tess {
 
 struct CornerAttributes {
     std::vector<Eigen::Vector2d> uvs;      // 3 #T, in the face's (u,v) domain
@@ -27,4 +27,4 @@ struct CornerAttributes {
 // mesh has face ids naming faces of `model`, uvs and normals.
 CornerAttributes corner_attributes(const geom::Model& model, const mesh::Mesh& mesh);
 
-}  // namespace trimkit::io
+}  // namespace trimkit::tess

@@ -1,4 +1,4 @@
-#include "io/corner_attributes.h"
+#include "tess/corner_attributes.h"
 
 #include <cmath>
 #include <memory>
@@ -7,7 +7,7 @@
 #include "geom/error.h"
 #include "geom/surface_projector.h"
 
-namespace trimkit::io {
+namespace trimkit::tess {
 namespace {
 
 // A vertex's own (u,v) counts as a good Newton start on another face when S(uv)
@@ -96,4 +96,4 @@ CornerAttributes corner_attributes(const geom::Model& model, const mesh::Mesh& m
     return out;
 }
 
-}  // namespace trimkit::io
+}  // namespace trimkit::tess
