@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "geom/knot_vector.h"
+
 namespace trimkit::tess {
 
 namespace {
@@ -102,6 +104,24 @@ SurfaceDerivativeBounds surface_derivative_bounds(const geom::NurbsSurface& S,
     }
     if (whole) return surface_derivative_bounds(S);
     return surface_derivative_bounds(S.sub_surface(lo[0], hi[0], lo[1], hi[1]));
+}
+
+bool is_c1_inside(const geom::NurbsSurface& S, const Eigen::AlignedBox2d& region) {
+    const std::vector<double>* knots[2] = {&S.knots_u(), &S.knots_v()};
+    const int degree[2] = {S.degree_u(), S.degree_v()};
+    for (int d = 0; d < 2; ++d) {
+        const std::vector<double>& U = *knots[d];
+        const double tol = geom::kKnotTolerance * (U.back() - U.front());
+        const double lo = region.min()(d) + tol, hi = region.max()(d) - tol;
+        for (size_t i = 0; i < U.size();) {
+            size_t j = i;
+            while (j < U.size() && U[j] - U[i] <= tol) ++j;
+            const int m = static_cast<int>(j - i);
+            if (U[i] > lo && U[i] < hi && m >= degree[d]) return false;
+            i = j;
+        }
+    }
+    return true;
 }
 
 CurveDerivativeBounds curve_derivative_bounds(const geom::NurbsCurve2d& c) {

@@ -31,6 +31,12 @@ constexpr double kMinRegionRelative = 1e-6;
 SurfaceDerivativeBounds surface_derivative_bounds(const geom::NurbsSurface& S,
                                                   const Eigen::AlignedBox2d& region);
 
+// True when S is C^1 across every interior knot line strictly inside `region`
+// (multiplicity m <= degree - 1, [PT] Sec. 2.2: C^(p-m) there). Only then do the
+// second-derivative bounds above bound the linear interpolation error of S along a
+// segment that crosses such a line (at a C^0 crease S_uu etc. are unbounded).
+bool is_c1_inside(const geom::NurbsSurface& S, const Eigen::AlignedBox2d& region);
+
 // Upper bounds over the whole domain of c on |u'(t)|, |v'(t)| and |c''(t)|.
 // [Yang] eq. 7-8 (M^t_u, M^t_v, M^tt). Rational c: the same quotient rule as above.
 struct CurveDerivativeBounds {

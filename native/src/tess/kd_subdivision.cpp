@@ -1,12 +1,15 @@
 #include "tess/kd_subdivision.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "geom/error.h"
 #include "tess/bezier_patch.h"
 #include "tess/bilinear_error.h"
+#include "tess/derivative_bounds.h"
 
 namespace trimkit::tess {
 namespace {
@@ -17,13 +20,138 @@ using geom::format_value;
 // parameters can no longer be told apart reliably (double has ~16 digits).
 constexpr double kMinRelativeWidth = 1e-12;
 
-void subdivide(const BezierPatch& patch, double tolerance, ErrorMode mode, double min_du,
-               double min_dv, std::vector<Cell>& leaves) {
+// The trim segments a kd-tree node meets, for trim-aware tolerances.
+struct TrimSegments {
+    std::vector<std::array<Eigen::Vector2d, 2>> segments;
+    // Per segment: F >= sup |f''|, f(s) = S(a + s (b - a)); a crossing at s lies
+    // within s (1 - s) F / 2 of S at its (u,v) (linear interpolation error). First
+    // from the derivative bounds over the segment's loop's box; from its own box
+    // (tighter, one sub-surface each) once a cell needs it (`precise`).
+    std::vector<double> curvature;
+    std::vector<char> precise;
+    const geom::NurbsSurface* surface = nullptr;
+    double tolerance = 0.0;           // cells no segment meets (inside the loops)
+    double boundary_tolerance = 0.0;  // cells a segment meets, at least
+    double total_tolerance = 0.0;     // cells a segment meets: bound + crossing offset
+    double margin = 0.0;              // absolute, in (u,v)
+    bool active = false;              // false: every cell uses `tolerance`
+};
+
+// True if segment a b meets the closed rectangle grown by `margin` (Liang-Barsky);
+// then [*lo, *hi] is the part of the segment inside.
+bool meets(const std::array<Eigen::Vector2d, 2>& ab, double u0, double u1, double v0, double v1,
+           double margin, double* lo_out = nullptr, double* hi_out = nullptr) {
+    const Eigen::Vector2d a = ab[0], d = ab[1] - ab[0];
+    double lo = 0.0, hi = 1.0;
+    const double p[4] = {-d.x(), d.x(), -d.y(), d.y()};
+    const double q[4] = {a.x() - (u0 - margin), (u1 + margin) - a.x(), a.y() - (v0 - margin),
+                         (v1 + margin) - a.y()};
+    for (int k = 0; k < 4; ++k) {
+        if (p[k] == 0.0) {
+            if (q[k] < 0.0) return false;
+            continue;
+        }
+        const double r = q[k] / p[k];
+        if (p[k] < 0.0) lo = std::max(lo, r);
+        else hi = std::min(hi, r);
+        if (lo > hi) return false;
+    }
+    if (lo_out) *lo_out = lo, *hi_out = hi;
+    return true;
+}
+
+// [Yang] eq. 10 with c linear: |f''| <= M^uu Δu² + 2 M^uv |Δu Δv| + M^vv Δv², M the
+// derivative bounds over a region holding the segment; infinite across a C^0 knot
+// line (is_c1_inside).
+double segment_curvature(const geom::NurbsSurface& S, const std::array<Eigen::Vector2d, 2>& ab,
+                         const SurfaceDerivativeBounds& M) {
+    Eigen::AlignedBox2d seg_box(ab[0]);
+    seg_box.extend(ab[1]);
+    if (!is_c1_inside(S, seg_box)) return std::numeric_limits<double>::infinity();
+    const double du = std::abs(ab[1].x() - ab[0].x()), dv = std::abs(ab[1].y() - ab[0].y());
+    return M.Muu * du * du + 2.0 * M.Muv * du * dv + M.Mvv * dv * dv;
+}
+
+// The largest offset from S of the node's crossings: where the segments meeting it
+// enter or leave it (their points inside are trim points, on S). Offsets up to
+// `harmless` do not change the cell's tolerance: coarse curvatures are refined only
+// above it.
+double crossing_offset(TrimSegments& trims, const std::vector<int>& segments, const Cell& r,
+                       double harmless) {
+    double worst = 0.0;
+    for (int s : segments) {
+        double lo = 0.0, hi = 1.0;
+        if (!meets(trims.segments[s], r.u0, r.u1, r.v0, r.v1, trims.margin, &lo, &hi)) continue;
+        double x = 0.0;
+        if (lo > 0.0) x = std::max(x, 0.5 * lo * (1.0 - lo));
+        if (hi < 1.0) x = std::max(x, 0.5 * hi * (1.0 - hi));
+        if (x * trims.curvature[s] > harmless && !trims.precise[s]) {
+            Eigen::AlignedBox2d seg_box(trims.segments[s][0]);
+            seg_box.extend(trims.segments[s][1]);
+            trims.curvature[s] = std::min(
+                trims.curvature[s], segment_curvature(*trims.surface, trims.segments[s],
+                                                      surface_derivative_bounds(*trims.surface, seg_box)));
+            trims.precise[s] = 1;
+        }
+        worst = std::max(worst, x * trims.curvature[s]);
+    }
+    return worst;
+}
+
+// Even-odd test of (u, v) against all segments, half-open in v as in trim_cells.
+bool inside_loops(const TrimSegments& trims, double u, double v) {
+    bool in = false;
+    for (const auto& [a, b] : trims.segments)
+        if ((a.y() > v) != (b.y() > v)) {
+            const double x = a.x() + (v - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+            if (x > u) in = !in;
+        }
+    return in;
+}
+
+struct Node {
+    BezierPatch patch;
+    std::vector<int> segments;  // trim segments meeting the node (trims.active)
+};
+
+// `stretch`: the (u,v) rectangle a cell covers after kd_subdivision stretches the
+// domain's sides to the box's.
+template <class Stretch>
+void subdivide(const BezierPatch& patch, TrimSegments& trims, const Stretch& stretch,
+               ErrorMode mode, double min_du, double min_dv, std::vector<Cell>& leaves) {
+    auto meeting = [&](const BezierPatch& p, const std::vector<int>& from, std::vector<int>& out) {
+        const Cell r = stretch(Cell{p.u0, p.u1, p.v0, p.v1});
+        for (int s : from)
+            if (meets(trims.segments[s], r.u0, r.u1, r.v0, r.v1, trims.margin)) out.push_back(s);
+    };
     // Explicit stack: deep kd-trees on fine tolerances must not overflow the call stack.
-    std::vector<BezierPatch> stack{patch};
+    std::vector<Node> stack(1);
+    stack[0].patch = patch;
+    if (trims.active) {
+        std::vector<int> all(trims.segments.size());
+        for (size_t s = 0; s < all.size(); ++s) all[s] = static_cast<int>(s);
+        meeting(patch, all, stack[0].segments);
+    }
     while (!stack.empty()) {
-        BezierPatch current = std::move(stack.back());
+        Node node = std::move(stack.back());
         stack.pop_back();
+        const BezierPatch& current = node.patch;
+        double tolerance = trims.tolerance;
+        if (trims.active && node.segments.empty()) {
+            // No trim meets the cell: wholly kept or wholly dropped by trim_cells.
+            const Cell r = stretch(Cell{current.u0, current.u1, current.v0, current.v1});
+            if (!inside_loops(trims, 0.5 * (r.u0 + r.u1), 0.5 * (r.v0 + r.v1))) {
+                leaves.push_back({current.u0, current.u1, current.v0, current.v1});
+                continue;
+            }
+        } else if (trims.active) {
+            const Cell r = stretch(Cell{current.u0, current.u1, current.v0, current.v1});
+            tolerance = std::min(trims.tolerance,
+                                 std::max(trims.boundary_tolerance,
+                                          trims.total_tolerance -
+                                              crossing_offset(trims, node.segments, r,
+                                                              trims.total_tolerance - trims.tolerance)));
+        }
         const BilinearError error = bilinear_error(current, mode, tolerance);
         if (!std::isfinite(error.bound))
             throw geom::NumericalFailure(
@@ -46,26 +174,46 @@ void subdivide(const BezierPatch& patch, double tolerance, ErrorMode mode, doubl
         if (!in_u && !can_v) in_u = true;
         const double split = in_u == error.split_in_u ? error.split : 0.5;
         auto halves = in_u ? split_u(current, split) : split_v(current, split);
-        stack.push_back(std::move(halves.second));
-        stack.push_back(std::move(halves.first));
+        Node first, second;
+        first.patch = std::move(halves.first);
+        second.patch = std::move(halves.second);
+        if (trims.active) {
+            meeting(first.patch, node.segments, first.segments);
+            meeting(second.patch, node.segments, second.segments);
+        }
+        stack.push_back(std::move(second));
+        stack.push_back(std::move(first));
     }
 }
 
 }  // namespace
 
-CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
-                        double tolerance, ErrorMode mode) {
+namespace {
+
+CellGrid subdivide_box(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
+                       TrimSegments& trims, ErrorMode mode) {
     if (box.isEmpty() || !box.min().allFinite() || !box.max().allFinite() ||
         !(box.max().x() > box.min().x()) || !(box.max().y() > box.min().y()))
         throw geom::InvalidInput("kd_subdivision: (u,v) box must be finite and non-empty");
-    if (!(tolerance > 0.0) || !std::isfinite(tolerance))
-        throw geom::InvalidInput("kd_subdivision: tolerance = " + format_value(tolerance) +
-                                 "; expected a finite value > 0");
+    for (double t : {trims.tolerance, trims.boundary_tolerance, trims.total_tolerance})
+        if (!(t > 0.0) || !std::isfinite(t))
+            throw geom::InvalidInput("kd_subdivision: tolerance = " + format_value(t) +
+                                     "; expected a finite value > 0");
     const auto [du0, du1] = surface.domain_u();
     const auto [dv0, dv1] = surface.domain_v();
     const double bu0 = box.min().x(), bu1 = box.max().x(), bv0 = box.min().y(), bv1 = box.max().y();
     const double min_du = kMinRelativeWidth * (bu1 - bu0);
     const double min_dv = kMinRelativeWidth * (bv1 - bv0);
+    trims.margin = kTrimMeetMargin * box.sizes().maxCoeff();
+    // Cells on the domain's sides reach the box's sides (trim points outside the
+    // domain; evaluation clamps to the domain there).
+    const auto stretch = [&](Cell c) {
+        if (c.u0 == std::max(du0, bu0)) c.u0 = std::min(c.u0, bu0);
+        if (c.u1 == std::min(du1, bu1)) c.u1 = std::max(c.u1, bu1);
+        if (c.v0 == std::max(dv0, bv0)) c.v0 = std::min(c.v0, bv0);
+        if (c.v1 == std::min(dv1, bv1)) c.v1 = std::max(c.v1, bv1);
+        return c;
+    };
 
     CellGrid grid;
     grid.box = box;
@@ -76,22 +224,47 @@ CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedB
         const double v0 = std::max(pv0, bv0), v1 = std::min(pv1, bv1);
         if (!(u1 > u0) || !(v1 > v0)) continue;
         const BezierPatch patch = restrict_patch(bezier_patch(bezier), u0, u1, v0, v1);
-        subdivide(patch, tolerance, mode, min_du, min_dv, grid.cells);
+        subdivide(patch, trims, stretch, mode, min_du, min_dv, grid.cells);
     }
     if (grid.cells.empty())
         throw geom::InvalidInput("kd_subdivision: (u,v) box [" + format_value(bu0) + ", " +
                                  format_value(bu1) + "] x [" + format_value(bv0) + ", " +
                                  format_value(bv1) + "] misses the surface's domain");
-    // Stretch cells on the domain's sides to the box's sides (trim points outside the
-    // domain; evaluation clamps to the domain there).
-    for (Cell& c : grid.cells) {
-        if (c.u0 == std::max(du0, bu0)) c.u0 = std::min(c.u0, bu0);
-        if (c.u1 == std::min(du1, bu1)) c.u1 = std::max(c.u1, bu1);
-        if (c.v0 == std::max(dv0, bv0)) c.v0 = std::min(c.v0, bv0);
-        if (c.v1 == std::min(dv1, bv1)) c.v1 = std::max(c.v1, bv1);
-    }
+    for (Cell& c : grid.cells) c = stretch(c);
     grid.boundary = cell_boundaries(grid.cells);
     return grid;
+}
+
+}  // namespace
+
+CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
+                        double tolerance, ErrorMode mode) {
+    TrimSegments trims;
+    trims.tolerance = trims.boundary_tolerance = trims.total_tolerance = tolerance;
+    return subdivide_box(surface, box, trims, mode);
+}
+
+CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
+                        double tolerance, double boundary_tolerance, double total_tolerance,
+                        const std::vector<TrimPolygon>& loops, ErrorMode mode) {
+    TrimSegments trims;
+    trims.tolerance = tolerance;
+    trims.boundary_tolerance = boundary_tolerance;
+    trims.total_tolerance = total_tolerance;
+    trims.surface = &surface;
+    for (const TrimPolygon& loop : loops) {
+        Eigen::AlignedBox2d loop_box;
+        for (const PolylinePoint& p : loop.points) loop_box.extend(p.uv);
+        if (loop.points.size() < 2) continue;
+        const SurfaceDerivativeBounds M = surface_derivative_bounds(surface, loop_box);
+        for (size_t i = 0, n = loop.points.size(); i < n; ++i) {
+            trims.segments.push_back({loop.points[i].uv, loop.points[(i + 1) % n].uv});
+            trims.curvature.push_back(segment_curvature(surface, trims.segments.back(), M));
+            trims.precise.push_back(0);
+        }
+    }
+    trims.active = !trims.segments.empty();
+    return subdivide_box(surface, box, trims, mode);
 }
 
 std::vector<std::vector<Eigen::Vector2d>> cell_boundaries(const std::vector<Cell>& cells) {

@@ -13,6 +13,7 @@
 
 #include "geom/nurbs_surface.h"
 #include "tess/tessellation_options.h"
+#include "tess/trim_polyline.h"
 
 namespace trimkit::tess {
 
@@ -39,6 +40,23 @@ constexpr std::size_t kMaxCells = 4'000'000;
 // geom::NumericalFailure when a bound is not finite or more than kMaxCells are needed.
 CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
                         double tolerance, ErrorMode mode);
+
+// Trim-aware subdivision. A cell that no segment of `loops` meets (closed cell, with
+// a margin of kTrimMeetMargin of the box) holds only vertices on S: its bound must
+// be <= `tolerance`. A cell a segment meets also holds the crossings of its sides
+// with the segments, which sit off S by up to s (1 - s) F / 2 (F >= sup |f''| for
+// f(s) = S(a + s (b - a)), [Yang] eq. 10 with a linear curve; infinite across a C^0
+// knot line): its bound must be <= min(tolerance, max(boundary_tolerance,
+// total_tolerance - the largest offset of its own crossings)), so bound + offset <=
+// total_tolerance when the trims keep their offsets <= total_tolerance -
+// boundary_tolerance.
+// Cells that no segment meets and that lie outside the loops (even-odd rule, as
+// trim_cells decides) produce no triangles and are not subdivided at all.
+// `loops`: closed polygons in (u,v); orientation does not matter here.
+constexpr double kTrimMeetMargin = 1e-9;
+CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
+                        double tolerance, double boundary_tolerance, double total_tolerance,
+                        const std::vector<TrimPolygon>& loops, ErrorMode mode);
 
 // The boundary points of every cell (CellGrid::boundary) for cells tiling a box.
 std::vector<std::vector<Eigen::Vector2d>> cell_boundaries(const std::vector<Cell>& cells);

@@ -66,7 +66,11 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     box.max() += margin;
 
     auto start = Clock::now();
-    const CellGrid grid = kd_subdivision(face.surface, box, surface_tolerance(options), options.mode);
+    // Cells no trim meets hold only points of S; cells a trim meets also hold the
+    // crossings, off S by up to their chord's offset: tessellation_options.h.
+    const CellGrid grid =
+        kd_subdivision(face.surface, box, interior_tolerance(options), surface_tolerance(options),
+                       options.tolerance, loops, options.mode);
     timings.surface += seconds_since(start);
 
     start = Clock::now();

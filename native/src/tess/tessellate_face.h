@@ -26,8 +26,10 @@ struct FaceTimings {
 // domain; outer loops counter-clockwise, holes clockwise; loops with the wrong
 // orientation for their `outer` flag are reversed). Every triangle gets `face_id`;
 // edges along the loops are flagged mesh::kFaceBoundary. In kGuaranteed mode every
-// point of the mesh lies within surface_tolerance(options) of S at its (u,v),
-// plus the loops' own error near the boundary.
+// point of the mesh lies within interior_tolerance(options) of S at its (u,v) away
+// from the loops, and within options.tolerance in cells the loops cross (the cell's
+// bound plus its crossings' offset from S; tessellation_options.h), for loops whose
+// vertices lie on S.
 // Throws geom::InvalidInput for invalid options or non-finite loop points, and
 // geom::NumericalFailure naming the face on degenerate data; never returns NaNs.
 mesh::Mesh tessellate_face(const geom::Face& face, const std::vector<TrimPolygon>& loops,

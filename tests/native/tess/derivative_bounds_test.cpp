@@ -70,5 +70,23 @@ TEST(DerivativeBounds, CurveBoundsHold) {
     EXPECT_NEAR(curve_derivative_bounds(test::yang_curve(false)).Mtt, 3.841874, 1e-6);
 }
 
+// A degree-2 surface in u with a double knot at u = 0.5 (C^0 there) and a simple
+// one at u = 0.25 (C^1); cubic in v without interior knots.
+TEST(DerivativeBounds, IsC1InsideSeesC0KnotLines) {
+    const std::vector<double> U = {0, 0, 0, 0.25, 0.5, 0.5, 1, 1, 1};
+    const std::vector<double> V = {0, 0, 0, 0, 1, 1, 1, 1};
+    std::vector<Eigen::Vector3d> P;
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 4; ++j) P.emplace_back(i, j, (i % 2) * 0.3);
+    const geom::NurbsSurface S(2, 3, U, V, 6, 4, P);
+    auto box = [](double u0, double u1) {
+        return Eigen::AlignedBox2d(Eigen::Vector2d(u0, 0.2), Eigen::Vector2d(u1, 0.8));
+    };
+    EXPECT_TRUE(is_c1_inside(S, box(0.1, 0.4)));    // crosses the C^1 knot only
+    EXPECT_FALSE(is_c1_inside(S, box(0.4, 0.6)));   // crosses the C^0 knot
+    EXPECT_TRUE(is_c1_inside(S, box(0.5, 0.9)));    // ends on it: does not cross
+    EXPECT_TRUE(is_c1_inside(S, box(0.6, 0.6)));
+}
+
 }  // namespace
 }  // namespace trimkit::tess
