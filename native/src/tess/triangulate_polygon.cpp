@@ -15,6 +15,9 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Ve
 // Areas below this fraction of the squared polygon size count as zero (double
 // rounding in the cross products of (u,v) points is about 1e-16 of it).
 constexpr double kRelativeAreaEpsilon = 1e-14;
+// A hole vertex this close to an outer vertex (relative to the ring's box) touches it:
+// far above the rounding of loops meeting at one point, far below any trim segment.
+constexpr double kTouchingRelative = 1e-10;
 
 std::vector<int> without_duplicates(const std::vector<int>& ring) {
     std::vector<int> out;
@@ -25,11 +28,40 @@ std::vector<int> without_duplicates(const std::vector<int>& ring) {
     return out;
 }
 
+// A hole that touches `outer` at a vertex P (a circle tangent inside another, both
+// loops through P; the two copies of P may differ by rounding, up to `snap`) needs no
+// bridge: the ring runs to P, around the hole and back to the same P, and on. A bridge
+// elsewhere would leave the ring pinched at P twice, and ear clipping could then fold
+// a triangle over the pinch. Outer vertices are searched by u (sorted), so this is
+// O((n + m) log n).
+bool splice_touching_hole(const std::vector<Eigen::Vector2d>& uv, std::vector<int>& outer,
+                          const std::vector<int>& hole, double snap) {
+    std::vector<std::pair<double, size_t>> by_u;
+    by_u.reserve(outer.size());
+    for (size_t p = 0; p < outer.size(); ++p) by_u.emplace_back(uv[outer[p]].x(), p);
+    std::sort(by_u.begin(), by_u.end());
+    for (size_t q = 0; q < hole.size(); ++q) {
+        const Eigen::Vector2d& h = uv[hole[q]];
+        auto it = std::lower_bound(by_u.begin(), by_u.end(), std::make_pair(h.x() - snap, size_t{0}));
+        for (; it != by_u.end() && it->first <= h.x() + snap; ++it) {
+            const size_t p = it->second;
+            if ((uv[outer[p]] - h).norm() > snap) continue;
+            std::vector<int> merged(outer.begin(), outer.begin() + p + 1);
+            for (size_t k = 1; k < hole.size(); ++k) merged.push_back(hole[(q + k) % hole.size()]);
+            merged.insert(merged.end(), outer.begin() + p, outer.end());  // P once more
+            outer = std::move(merged);
+            return true;
+        }
+    }
+    return false;
+}
+
 // Joins `hole` (clockwise) into `outer` (counter-clockwise) by a bridge from the
 // hole's rightmost vertex M to a vertex of `outer` visible from it. [Eberly,
 // "Triangulation by ear clipping", Sec. 3]
 void bridge_hole(const std::vector<Eigen::Vector2d>& uv, std::vector<int>& outer,
-                 const std::vector<int>& hole) {
+                 const std::vector<int>& hole, double snap) {
+    if (splice_touching_hole(uv, outer, hole, snap)) return;
     size_t m = 0;
     for (size_t k = 1; k < hole.size(); ++k) {
         const Eigen::Vector2d& a = uv[hole[k]];
@@ -224,7 +256,10 @@ std::vector<std::array<int, 3>> triangulate_polygon(const std::vector<Eigen::Vec
     };
     std::sort(clean.begin(), clean.end(),
               [&](const auto& a, const auto& b) { return max_u(a) > max_u(b); });
-    for (const auto& hole : clean) bridge_hole(uv, ring, hole);
+    Eigen::AlignedBox2d box;
+    for (int v : ring) box.extend(uv[v]);
+    const double snap = kTouchingRelative * box.diagonal().norm();
+    for (const auto& hole : clean) bridge_hole(uv, ring, hole, snap);
     clip_ears(uv, ring, triangles);
     return triangles;
 }
