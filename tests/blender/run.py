@@ -238,6 +238,27 @@ def test_damaged_file_reports_error_and_leaves_scene_unchanged():
     print(f"    damaged file: {message.strip().splitlines()[-1]}")
 
 
+def test_damaged_step_reports_error_without_crashing_blender():
+    # A damaged type name made Open CASCADE dereference a null handle (a segfault that
+    # took Blender down); now the operator reports it and the scene is unchanged.
+    text = step_sample("xr1-tc-nut.stp").read_text()
+    assert "#20=VERTEX_POINT" in text
+    damaged = TMP / "damaged_nut.stp"
+    damaged.write_text(text.replace("#20=VERTEX_POINT", "#20=VERTEX_(OINT", 1))
+    empty_scene()
+    counts = (len(bpy.data.objects), len(bpy.data.meshes), len(bpy.data.texts))
+    try:
+        bpy.ops.import_scene.trimkit_step(filepath=str(damaged))
+    except RuntimeError as err:
+        message = str(err)
+    else:
+        raise AssertionError("no error for a damaged STEP file")
+    assert "damaged_nut.stp" in message, message
+    assert (len(bpy.data.objects), len(bpy.data.meshes), len(bpy.data.texts)) == counts
+    assert bpy.ops.import_scene.trimkit_step(filepath=str(step_sample("xr1-tc-nut.stp"))) == {'FINISHED'}
+    print(f"    damaged STEP: {message.strip().splitlines()[-1]}")
+
+
 def loop_normals(me):
     """(3m, 3) loop normals as Blender shades them (custom normals applied)."""
     import numpy as np

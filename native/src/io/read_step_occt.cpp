@@ -1,9 +1,14 @@
 // read_step through Open CASCADE (built only with TRIMKIT_WITH_OCCT): STEPCAFControl_Reader
-// gives a TopoDS_Shape (the document's free shapes) with names and colours, BRepBuilderAPI_NurbsConvert turns every surface and pcurve into
-// a B-spline, and each face occurrence (TopExp_Explorer, so instanced parts count once
-// per placement) becomes a geom::Face with its placement applied to the control points.
-// Edges are shared through a TopTools_IndexedMapOfShape (same TShape and location).
+// gives a TopoDS_Shape (the document's free shapes) with names and colours,
+// BRepBuilderAPI_NurbsConvert turns every surface and pcurve into a B-spline, and each face
+// occurrence (TopExp_Explorer, so instanced parts count once per placement) becomes a
+// geom::Face with its placement applied to the control points. Edges are shared through a
+// TopTools_IndexedMapOfShape (same TShape and location). OCCT's memory faults on broken
+// files become read errors (OcctSignalGuard).
 #include "io/read_step.h"
+
+// OCC_CATCH_SIGNALS turns a signal raised inside OCCT into a Standard_Failure (Linux).
+#define OCC_CONVERT_SIGNALS
 
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepTools.hxx>
@@ -21,6 +26,8 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
+#include <OSD.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <BRep_Builder.hxx>
 #include <Quantity_Color.hxx>
 #include <STEPCAFControl_Reader.hxx>
@@ -46,6 +53,7 @@
 #include <TopoDS_Wire.hxx>
 #include <gp_Trsf.hxx>
 
+#include <csignal>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -338,6 +346,28 @@ std::string failure_text(const Standard_Failure& e) {
     return std::string(e.DynamicType()->Name()) + (text && *text ? std::string(": ") + text : "");
 }
 
+// While OCCT reads a file, its signal handlers are installed so that a memory fault
+// inside it (OCCT 7.6 dereferences null handles for some broken references, e.g. an
+// entity whose type name is damaged) jumps to OCC_CATCH_SIGNALS and is thrown as a
+// Standard_Failure instead of killing the process, Blender included. The process's own
+// handlers are restored afterwards.
+class OcctSignalGuard {
+public:
+    OcctSignalGuard() {
+        for (int s = 1; s < NSIG; ++s) sigaction(s, nullptr, &saved_[s]);
+        OSD::SetSignal(OSD_SignalMode_Set, /*theFloatingSignal=*/false);
+    }
+    ~OcctSignalGuard() {
+        for (int s = 1; s < NSIG; ++s)
+            if (s != SIGKILL && s != SIGSTOP) sigaction(s, &saved_[s], nullptr);
+    }
+    OcctSignalGuard(const OcctSignalGuard&) = delete;
+    OcctSignalGuard& operator=(const OcctSignalGuard&) = delete;
+
+private:
+    struct sigaction saved_[NSIG] = {};
+};
+
 // Names and colours of the document's shapes (XCAF), turned into Model::colors.
 class StepStyles {
 public:
@@ -400,8 +430,20 @@ private:
 
 bool step_supported() { return true; }
 
+geom::Model read_step_unguarded(const std::string& path);
+
 geom::Model read_step(const std::string& path) {
     silence_occt_stdout();
+    try {
+        OcctSignalGuard guard;
+        OCC_CATCH_SIGNALS
+        return read_step_unguarded(path);
+    } catch (const Standard_Failure& e) {
+        throw geom::ReadError(path, 0, "Open CASCADE failed (a damaged file?): " + failure_text(e));
+    }
+}
+
+geom::Model read_step_unguarded(const std::string& path) {
     TopoDS_Shape original;
     TopoDS_Shape shape;
     Handle(TDocStd_Document) doc;

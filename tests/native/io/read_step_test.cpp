@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 #include <utility>
@@ -67,6 +69,23 @@ TEST(ReadStep, MissingOrBrokenFileIsReadError) {
     }
     EXPECT_THROW(read_step(bad), geom::ReadError);
     std::filesystem::remove(bad);
+}
+
+// One damaged type name (VERTEX_POINT -> VERTEX_(OINT) made OCCT 7.6 dereference a null
+// handle during the transfer and killed the process; now it is a read error. Then a
+// good file still reads (the process's signal handlers are back in place).
+TEST(ReadStep, DamagedEntityIsReadErrorNotACrash) {
+    REQUIRE_STEP_FILE(path, "xr1-tc-nut.stp");
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t at = text.find("#20=VERTEX_POINT");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 16, "#20=VERTEX_(OINT");
+    const std::string bad = (std::filesystem::temp_directory_path() / "trimkit_damaged_nut.stp").string();
+    std::ofstream(bad) << text;
+    EXPECT_THROW(read_step(bad), geom::ReadError);
+    std::filesystem::remove(bad);
+    EXPECT_EQ(read_step(path).faces.size(), 8u);
 }
 
 TEST(ReadStep, FaceCountsMatchOpenCascade) {
