@@ -67,16 +67,12 @@ class ImportCadBase(ImportHelper):
         row.prop(self, "exact_normals")
 
     def execute(self, context):
-        wm = context.window_manager
-        wm.progress_begin(0.0, 1.0)
-        try:
-            objects, result = importer.import_file(context, self.filepath, self.settings(),
-                                                   progress=wm.progress_update)
-        except (RuntimeError, ValueError, OSError, ImportError) as err:
-            self.report({'ERROR'}, str(err))
+        done = run_with_progress(
+            self, context, lambda progress: importer.import_file(context, self.filepath, self.settings(),
+                                                                 progress=progress))
+        if done is None:
             return {'CANCELLED'}
-        finally:
-            wm.progress_end()
+        objects, result = done
         for face, reason in result.failed_faces:
             self.report({'WARNING'}, f"face {face} not meshed: {reason}")
         self.report({'INFO'}, f"{len(objects)} objects, {result.triangles} triangles, "
@@ -101,6 +97,20 @@ class IMPORT_SCENE_OT_trimkit_step(bpy.types.Operator, ImportCadBase):
     filter_glob: StringProperty(default="*.stp;*.step", options={'HIDDEN'})
 
 
+def run_with_progress(operator, context, work):
+    """work(progress) under a progress bar; its errors are reported on `operator` and
+    give None (the caller returns {'CANCELLED'})."""
+    wm = context.window_manager
+    wm.progress_begin(0.0, 1.0)
+    try:
+        return work(wm.progress_update)
+    except (RuntimeError, ValueError, OSError, ImportError) as err:
+        operator.report({'ERROR'}, str(err))
+        return None
+    finally:
+        wm.progress_end()
+
+
 class OBJECT_OT_trimkit_retessellate(bpy.types.Operator):
     """Re-mesh the selected trimkit objects from their stored CAD geometry with their own settings"""
     bl_idname = "object.trimkit_retessellate"
@@ -116,15 +126,9 @@ class OBJECT_OT_trimkit_retessellate(bpy.types.Operator):
         objects = [o for o in context.selected_objects if importer.is_trimkit(o)]
         if not objects and importer.is_trimkit(context.active_object):
             objects = [context.active_object]
-        wm = context.window_manager
-        wm.progress_begin(0.0, 1.0)
-        try:
-            results = importer.retessellate(objects, progress=wm.progress_update)
-        except (RuntimeError, ValueError, ImportError) as err:
-            self.report({'ERROR'}, str(err))
+        results = run_with_progress(self, context, lambda progress: importer.retessellate(objects, progress=progress))
+        if results is None:
             return {'CANCELLED'}
-        finally:
-            wm.progress_end()
         for result in results:
             for face, reason in result.failed_faces:
                 self.report({'WARNING'}, f"face {face} not meshed: {reason}")
@@ -145,19 +149,18 @@ class OBJECT_OT_trimkit_check(bpy.types.Operator):
 
     def execute(self, context):
         objects = [o for o in context.selected_objects if importer.is_trimkit(o) and o.trimkit.kind == 'CAD']
-        wm = context.window_manager
-        wm.progress_begin(0.0, 1.0)
-        try:
+        def work(progress):
+            checked = []
             for k, obj in enumerate(objects):
-                report, tolerance = mesh_check.check_object(obj)
-                level = 'INFO' if max(report.mesh_to_surface, report.surface_to_mesh) <= tolerance else 'WARNING'
-                self.report({level}, f"{obj.name}: {obj.trimkit.check_report}")
-                wm.progress_update((k + 1) / len(objects))
-        except (RuntimeError, ValueError, ImportError) as err:
-            self.report({'ERROR'}, str(err))
+                checked.append((obj, *mesh_check.check_object(obj)))
+                progress((k + 1) / len(objects))
+            return checked
+        checked = run_with_progress(self, context, work)
+        if checked is None:
             return {'CANCELLED'}
-        finally:
-            wm.progress_end()
+        for obj, report, tolerance in checked:
+            level = 'INFO' if max(report.mesh_to_surface, report.surface_to_mesh) <= tolerance else 'WARNING'
+            self.report({level}, f"{obj.name}: {obj.trimkit.check_report}")
         return {'FINISHED'}
 
 
@@ -169,19 +172,6 @@ def levels_property(default=2):
 def lod_property(default=1):
     return IntProperty(name="LOD", default=default, min=0, soft_max=7,
                        description="Subdivisions per level K: each node splits into (K+1)^2 subpatches")
-
-
-def run_tbp(operator, context, work):
-    """Runs work(progress) with a progress bar; errors are reported and give {'CANCELLED'}."""
-    wm = context.window_manager
-    wm.progress_begin(0.0, 1.0)
-    try:
-        return work(wm.progress_update)
-    except (RuntimeError, ValueError, OSError, ImportError) as err:
-        operator.report({'ERROR'}, str(err))
-        return None
-    finally:
-        wm.progress_end()
 
 
 class IMPORT_SCENE_OT_trimkit_tbp(bpy.types.Operator, ImportHelper):
@@ -198,7 +188,7 @@ class IMPORT_SCENE_OT_trimkit_tbp(bpy.types.Operator, ImportHelper):
         def work(progress):
             progress(0.1)
             return tbp_objects.import_tbp(context, self.filepath, self.levels, self.lod)
-        done = run_tbp(self, context, work)
+        done = run_with_progress(self, context, work)
         if done is None:
             return {'CANCELLED'}
         obj, meshing = done
@@ -226,7 +216,7 @@ class OBJECT_OT_trimkit_mesh_to_tbp(bpy.types.Operator):
         def work(progress):
             progress(0.1)
             return tbp_objects.mesh_to_tbp(context, source, self.levels, self.lod)
-        done = run_tbp(self, context, work)
+        done = run_with_progress(self, context, work)
         if done is None:
             return {'CANCELLED'}
         obj, meshing = done
@@ -258,7 +248,7 @@ class OBJECT_OT_trimkit_trim(bpy.types.Operator):
         def work(progress):
             progress(0.1)
             return tbp_objects.trim(context, target, tool, self.keep, self.levels, self.lod)
-        done = run_tbp(self, context, work)
+        done = run_with_progress(self, context, work)
         if done is None:
             return {'CANCELLED'}
         obj, result = done

@@ -19,16 +19,26 @@
 #endif
 
 namespace trimkit::tbp {
+namespace {
 
-TbpSolid pn_triangles(const mesh::Mesh& input) {
+// The input's positions and triangles, validated and welded (coincident corners become
+// one vertex); `what` names the caller in errors.
+mesh::Mesh welded_cage(const mesh::Mesh& input, const char* what) {
     mesh::validate(input);
-    if (input.triangles.empty()) throw geom::InvalidInput("pn_triangles: the mesh has no triangles");
+    if (input.triangles.empty()) throw geom::InvalidInput(std::string(what) + ": the mesh has no triangles");
     mesh::Mesh m;
     m.positions = input.positions;
     m.triangles = input.triangles;
     mesh::WeldOptions weld;
     weld.tolerance = kWeldRelativeTolerance * mesh::bounding_box(m).diagonal().norm();
     mesh::weld_vertices(m, weld);
+    return m;
+}
+
+}  // namespace
+
+TbpSolid pn_triangles(const mesh::Mesh& input) {
+    const mesh::Mesh m = welded_cage(input, "pn_triangles");
 
     // Angle-weighted vertex normals.
     std::vector<Eigen::Vector3d> N(m.positions.size(), Eigen::Vector3d::Zero());
@@ -78,18 +88,6 @@ namespace {
 // Relative distance below which a quartic patch counts as the exact limit surface.
 constexpr double kExactRelativeTolerance = 1e-9;
 
-mesh::Mesh welded_cage(const mesh::Mesh& input) {
-    mesh::validate(input);
-    if (input.triangles.empty()) throw geom::InvalidInput("loop_quartics: the mesh has no triangles");
-    mesh::Mesh m;
-    m.positions = input.positions;
-    m.triangles = input.triangles;
-    mesh::WeldOptions weld;
-    weld.tolerance = kWeldRelativeTolerance * mesh::bounding_box(m).diagonal().norm();
-    mesh::weld_vertices(m, weld);
-    return m;
-}
-
 }  // namespace
 
 LoopConversion loop_quartics(const mesh::Mesh& input) {
@@ -98,7 +96,7 @@ LoopConversion loop_quartics(const mesh::Mesh& input) {
     throw geom::NumericalFailure("loop_quartics: trimkit was built without OpenSubdiv");
 #else
     using namespace OpenSubdiv;
-    const mesh::Mesh m = welded_cage(input);
+    const mesh::Mesh m = welded_cage(input, "loop_quartics");
     const int n = 4, count = geom::BezierTriangle::point_count(n);
     std::vector<int> sizes(m.triangles.size(), 3);
     std::vector<int> indices;

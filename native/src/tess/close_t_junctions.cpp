@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tess/snap_boundary_vertices.h"
+#include "tess/grid_cell.h"
 #include "tess/unpaired_sides.h"
 
 namespace trimkit::tess {
@@ -18,16 +19,6 @@ constexpr int kMaxPasses = 4;
 // Vertices closer than this share of the distance to an end of the edge are not
 // split in (they are that end up to rounding).
 constexpr double kMinSplitShare = 1e-6;
-
-struct CellKey {
-    long long x, y, z;
-    bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
-};
-struct CellKeyHash {
-    size_t operator()(const CellKey& k) const {
-        return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
-    }
-};
 
 }  // namespace
 
@@ -58,12 +49,8 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
         std::sort(vertices.begin(), vertices.end());
         vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
         const double cell = std::max(mean / open.size(), 4.0 * distance) + 1e-300;
-        auto key = [&](const Eigen::Vector3d& p) {
-            return CellKey{static_cast<long long>(std::floor(p.x() / cell)),
-                           static_cast<long long>(std::floor(p.y() / cell)),
-                           static_cast<long long>(std::floor(p.z() / cell))};
-        };
-        std::unordered_map<CellKey, std::vector<int>, CellKeyHash> grid;
+        auto key = [&](const Eigen::Vector3d& p) { return GridCell::of(p, cell); };
+        std::unordered_map<GridCell, std::vector<int>, GridCellHash> grid;
         for (int v : vertices) grid[key(mesh.positions[v])].push_back(v);
 
         std::vector<char> split(mesh.triangles.size(), 0);
@@ -78,8 +65,8 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
             const Eigen::Vector3d ab = b - a;
             const double len2 = ab.squaredNorm();
             if (!(len2 > 0.0)) continue;
-            const CellKey lo = key(a.cwiseMin(b) - Eigen::Vector3d::Constant(distance));
-            const CellKey hi = key(a.cwiseMax(b) + Eigen::Vector3d::Constant(distance));
+            const GridCell lo = key(a.cwiseMin(b) - Eigen::Vector3d::Constant(distance));
+            const GridCell hi = key(a.cwiseMax(b) + Eigen::Vector3d::Constant(distance));
             if ((hi.x - lo.x + 1) * (hi.y - lo.y + 1) * (hi.z - lo.z + 1) > 4096) continue;
             std::vector<std::pair<double, int>> on_edge;
             for (long long x = lo.x; x <= hi.x; ++x)

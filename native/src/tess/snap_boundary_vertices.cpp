@@ -11,20 +11,11 @@
 
 #include <Eigen/Geometry>
 
+#include "tess/grid_cell.h"
 #include "tess/unpaired_sides.h"
 
 namespace trimkit::tess {
 namespace {
-
-struct CellKey {
-    long long x, y, z;
-    bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
-};
-struct CellKeyHash {
-    size_t operator()(const CellKey& k) const {
-        return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
-    }
-};
 
 bool position_less(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     return std::tie(a.x(), a.y(), a.z()) < std::tie(b.x(), b.y(), b.z());
@@ -153,12 +144,8 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
 
     // Candidate pairs within the tolerance, closest first (ties by position).
     const double cell = tolerance;
-    auto key = [&](const Eigen::Vector3d& p) {
-        return CellKey{static_cast<long long>(std::floor(p.x() / cell)),
-                       static_cast<long long>(std::floor(p.y() / cell)),
-                       static_cast<long long>(std::floor(p.z() / cell))};
-    };
-    std::unordered_map<CellKey, std::vector<std::int32_t>, CellKeyHash> grid;
+    auto key = [&](const Eigen::Vector3d& p) { return GridCell::of(p, cell); };
+    std::unordered_map<GridCell, std::vector<std::int32_t>, GridCellHash> grid;
     for (std::int32_t g : ends) grid[key(mesh.positions[g])].push_back(g);
     struct Pair {
         double d;
@@ -166,7 +153,7 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
     };
     std::vector<Pair> pairs;
     for (std::int32_t g : ends) {
-        const CellKey k = key(mesh.positions[g]);
+        const GridCell k = key(mesh.positions[g]);
         for (long long dx = -1; dx <= 1; ++dx)
             for (long long dy = -1; dy <= 1; ++dy)
                 for (long long dz = -1; dz <= 1; ++dz) {

@@ -131,11 +131,17 @@ TEST(SnapBoundaryVertices, NeverCollapsesATriangleOrMovesBeyondTheTolerance) {
     EXPECT_GT(mesh::surface_area(m), 0.0);
 }
 
+// Default options with the tolerance kRelativeTolerance of the model's diagonal.
+TessellationOptions at_relative_tolerance(const geom::Model& model) {
+    TessellationOptions options;
+    options.tolerance = kRelativeTolerance * model_diagonal(model);
+    return options;
+}
+
 TEST(TessellateModelWeld, ThinPlateKeepsEveryFace) {
     TRIMKIT_CAD_SAMPLE(path, "iges/bug33327.igs");
     const geom::Model model = io::read_model(path);
-    TessellationOptions options;
-    options.tolerance = kRelativeTolerance * model_diagonal(model);
+    const TessellationOptions options = at_relative_tolerance(model);
     const TessellationResult r = tessellate_model(model, options);
     EXPECT_TRUE(r.failed_faces.empty());
     const std::set<std::int32_t> with_triangles(r.mesh.face_ids.begin(), r.mesh.face_ids.end());
@@ -177,8 +183,7 @@ class ClosedAfterWeld : public ::testing::TestWithParam<const char*> {};
 TEST_P(ClosedAfterWeld, NoOpenEdges) {
     TRIMKIT_CAD_SAMPLE(path, std::string("iges/") + GetParam());
     const geom::Model model = io::read_model(path);
-    TessellationOptions options;
-    options.tolerance = kRelativeTolerance * model_diagonal(model);
+    const TessellationOptions options = at_relative_tolerance(model);
     const TessellationResult r = tessellate_model(model, options);
     EXPECT_TRUE(r.failed_faces.empty());
     EXPECT_EQ(open_edges_by_float_position(r.mesh), 0u);
@@ -206,8 +211,7 @@ class DeviationWithinTolerance : public ::testing::TestWithParam<const char*> {}
 TEST_P(DeviationWithinTolerance, BothDirections) {
     TRIMKIT_CAD_SAMPLE(path, std::string("iges/") + GetParam());
     const geom::Model model = io::read_model(path);
-    TessellationOptions options;
-    options.tolerance = kRelativeTolerance * model_diagonal(model);
+    const TessellationOptions options = at_relative_tolerance(model);
     const TessellationResult r = tessellate_model(model, options);
     EXPECT_TRUE(r.failed_faces.empty());
     const DeviationReport d = measure_deviation(model, r.mesh);
