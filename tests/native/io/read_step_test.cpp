@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -141,23 +142,41 @@ TEST(ReadStep, FacesEvaluateFiniteAndLoopsClose) {
 }
 
 // as1-oc-214-mat.stp (an AP214 assembly): bodies carry their parts' product names and
-// faces the style colours (XCAF), equal colours shared.
+// faces the style colours (XCAF). The file's tree: as1 = plate + 2 l-bracket-assembly
+// (l-bracket + 3 nut-bolt-assembly (bolt + nut)) + rod-assembly (rod + 2 nut): 18 solids.
+// Its styles colour the parts (one colour each, the rod its only COLOUR_RGB(1, 0.5, 0))
+// and leave the plate plain; equal colours are one Model::colors entry.
 TEST(ReadStep, AssemblyPartsAreNamedAndColoured) {
     REQUIRE_STEP_FILE(path, "as1-oc-214-mat.stp");
     const geom::Model m = read_step(path);
     ASSERT_EQ(m.bodies.size(), 18u);
     std::map<std::string, int> names;
-    for (const geom::Body& b : m.bodies) ++names[b.name];
+    std::map<std::string, std::set<int>> part_colors;
+    for (const geom::Body& b : m.bodies) {
+        ++names[b.name];
+        for (int f : b.faces) {
+            ASSERT_LT(m.faces[f].color, static_cast<int>(m.colors.size()));
+            part_colors[b.name].insert(m.faces[f].color);
+        }
+    }
     EXPECT_EQ(names, (std::map<std::string, int>{{"bolt", 6}, {"l-bracket", 2}, {"nut", 8}, {"plate_1", 1},
                                                  {"rod", 1}}));
-    ASSERT_EQ(m.colors.size(), 4u);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(m.colors[0].rgb[k], k == 0 ? 1.0 : 0.0, 1e-6);  // red
-    int coloured = 0;
-    for (const geom::Face& f : m.faces) {
-        ASSERT_LT(f.color, static_cast<int>(m.colors.size()));
-        coloured += f.color >= 0 ? 1 : 0;
+    std::set<int> distinct;
+    for (const auto& [name, colors] : part_colors) {
+        ASSERT_EQ(colors.size(), 1u) << name;  // one colour per part, on every face
+        if (name == "plate_1") {
+            EXPECT_EQ(*colors.begin(), -1);
+            continue;
+        }
+        ASSERT_GE(*colors.begin(), 0) << name;
+        distinct.insert(*colors.begin());
     }
-    EXPECT_EQ(coloured, 142);
+    EXPECT_EQ(distinct.size(), 4u);
+    EXPECT_EQ(m.colors.size(), 4u);
+    const auto& rod = m.colors[*part_colors["rod"].begin()].rgb;
+    EXPECT_NEAR(rod[0], 1.0, 1e-6);
+    EXPECT_NEAR(rod[1], 0.5, 1e-6);
+    EXPECT_NEAR(rod[2], 0.0, 1e-6);
 }
 
 TEST(ReadStep, ScrewSharesEdgesAndPlacesCurvesOnSurfaces) {
