@@ -56,9 +56,34 @@ bool splice_touching_hole(const std::vector<Eigen::Vector2d>& uv, std::vector<in
     return false;
 }
 
+// True when M lies in the interior wedge at ring[p] (between the edge from the
+// previous vertex and the edge to the next; the interior is on the left of a
+// counter-clockwise ring).
+bool wedge_contains(const std::vector<Eigen::Vector2d>& uv, const std::vector<int>& ring, size_t p,
+                    const Eigen::Vector2d& M) {
+    const size_t n = ring.size();
+    const Eigen::Vector2d& a = uv[ring[(p + n - 1) % n]];
+    const Eigen::Vector2d& P = uv[ring[p]];
+    const Eigen::Vector2d& b = uv[ring[(p + 1) % n]];
+    const bool left_of_in = cross(a, P, M) >= 0.0, left_of_out = cross(P, b, M) >= 0.0;
+    return cross(a, P, b) >= 0.0 ? left_of_in && left_of_out : left_of_in || left_of_out;
+}
+
+// Among the copies of ring[p]'s point in the ring (a vertex an earlier bridge
+// duplicated), the one whose wedge holds M: bridging to another copy would cross
+// the earlier bridge (the ring is only weakly simple).
+size_t copy_facing(const std::vector<Eigen::Vector2d>& uv, const std::vector<int>& ring, size_t p,
+                   const Eigen::Vector2d& M) {
+    if (wedge_contains(uv, ring, p, M)) return p;
+    for (size_t k = 0; k < ring.size(); ++k)
+        if (k != p && uv[ring[k]] == uv[ring[p]] && wedge_contains(uv, ring, k, M)) return k;
+    return p;
+}
+
 // Joins `hole` (clockwise) into `outer` (counter-clockwise) by a bridge from the
 // hole's rightmost vertex M to a vertex of `outer` visible from it. [Eberly,
-// "Triangulation by ear clipping", Sec. 3]
+// "Triangulation by ear clipping", Sec. 3]. Departure: a bridge vertex that earlier
+// bridges duplicated is taken in the copy whose wedge faces M (copy_facing).
 void bridge_hole(const std::vector<Eigen::Vector2d>& uv, std::vector<int>& outer,
                  const std::vector<int>& hole, double snap) {
     if (splice_touching_hole(uv, outer, hole, snap)) return;
@@ -120,6 +145,7 @@ void bridge_hole(const std::vector<Eigen::Vector2d>& uv, std::vector<int>& outer
             }
         }
     }
+    p = copy_facing(uv, outer, p, M);
     std::vector<int> merged;
     merged.reserve(outer.size() + hole.size() + 2);
     merged.insert(merged.end(), outer.begin(), outer.begin() + p + 1);
