@@ -64,7 +64,9 @@ void bind_geom(py::module_& m) {
         .def_property_readonly(
             "matrix", [](const geom::Instance& i) -> Eigen::Matrix4d { return i.transform.matrix(); },
             "(4, 4) float64: the body's coordinates to the model's (file units), column vectors.")
-        .def_readonly("name", &geom::Instance::name);
+        .def_readonly("name", &geom::Instance::name)
+        .def_readonly("path", &geom::Instance::path,
+                      "Assembly names from the root down to the one holding the instance (STEP).");
 
     py::class_<geom::Color>(m, "Color")
         .def_readonly("rgb", &geom::Color::rgb)

@@ -4,6 +4,7 @@
 #include "io/model_summary.h"
 #include "io/read_iges.h"
 #include "io/read_model.h"
+#include "io/read_brep.h"
 #include "io/read_step.h"
 #include "io/write_mesh.h"
 #include "numpy_convert.h"
@@ -24,7 +25,7 @@ geom::Model read_model_bytes(const py::bytes& data, const std::string& name) {
 void bind_io(py::module_& m) {
     m.def("read_model", &io::read_model, py::arg("path"),
           py::call_guard<py::gil_scoped_release>(),
-          "Read an IGES or STEP model (by extension); raises RuntimeError 'FILE:LINE: reason' for a bad file.");
+          "Read an IGES, STEP or .brep model (by extension); raises RuntimeError 'FILE:LINE: reason' for a bad file.");
     m.def("step_supported", &io::step_supported,
           "True when this build reads STEP files (built with Open CASCADE).");
     // Only with OCCT: the add-on shows its STEP import operator when read_step exists.
@@ -32,6 +33,10 @@ void bind_io(py::module_& m) {
         m.def("read_step", &io::read_step, py::arg("path"),
               py::call_guard<py::gil_scoped_release>(),
               "Read a STEP model through Open CASCADE; raises RuntimeError 'FILE: reason'.");
+    if (io::step_supported())
+        m.def("read_brep", &io::read_brep, py::arg("path"),
+              py::call_guard<py::gil_scoped_release>(),
+              "Read an Open CASCADE .brep model; raises RuntimeError 'FILE: reason'.");
 
     m.def("read_model_bytes", &read_model_bytes, py::arg("data"), py::arg("name"),
           "Read an IGES model from bytes; `name` is used in messages ('NAME:LINE: reason').");

@@ -23,6 +23,9 @@ struct Instance {
     int body = -1;                        // index into Model::bodies
     Eigen::Affine3d transform = Eigen::Affine3d::Identity();
     std::string name;
+    // Names of the assemblies from the root down to the one holding this instance
+    // (STEP's XCAF tree; empty for IGES subfigures and top-level parts).
+    std::vector<std::string> path;
 };
 
 struct Color {

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "geom/error.h"
+#include "io/read_brep.h"
 #include "io/read_iges.h"
 #include "io/read_step.h"
 
@@ -16,8 +17,9 @@ geom::Model read_model(const std::string& path) {
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext == ".igs" || ext == ".iges") return read_iges(path);
     if (ext == ".stp" || ext == ".step") return read_step(path);
+    if (ext == ".brep" || ext == ".brp") return read_brep(path);
     throw geom::ReadError(path, 0, "unsupported file type '" + ext +
-                                       "'; expected .igs, .iges, .stp or .step");
+                                       "'; expected .igs, .iges, .stp, .step or .brep");
 }
 
 }  // namespace trimkit::io

@@ -1,0 +1,346 @@
+#include "io/occt_shape.h"
+
+// OCC_CATCH_SIGNALS turns a signal raised inside OCCT into a Standard_Failure (Linux).
+#define OCC_CONVERT_SIGNALS
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box2d.hxx>
+#include <BndLib_Add2dCurve.hxx>
+#include <Precision.hxx>
+#include <ShapeExtend_Status.hxx>
+#include <Standard_ErrorHandler.hxx>
+#include <ShapeFix_Face.hxx>
+#include <ShapeFix_Wire.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopLoc_Location.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include "geom/error.h"
+#include "io/occt_geometry.h"
+#include "io/occt_support.h"
+
+namespace trimkit::io {
+namespace {
+
+// P-curves mapped through a non-affine ParameterMap are refitted within this share
+// of the surface's (u,v) domain (3D error about this share of the face's size,
+// far below any tolerance a user meshes at).
+constexpr double kPcurveRefitShare = 1e-7;
+// Relative loop gaps (largest gap between consecutive coedges over the domain's
+// size): above kLoopGapRetry the face is healed by ShapeFix_Face and translated
+// again (the better result is kept); above kLoopGapMax it is skipped.
+constexpr double kLoopGapRetry = 1e-6;
+constexpr double kLoopGapMax = 1e-4;
+
+// The (u, v) box of the face's p-curves in OCCT's parameters (tight: AddOptimal).
+Eigen::AlignedBox2d trim_range(const TopoDS_Face& face) {
+    Bnd_Box2d box;
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+        double first = 0, last = 0;
+        const Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(TopoDS::Edge(it.Current()), face, first, last);
+        if (!c.IsNull()) BndLib_Add2dCurve::AddOptimal(c, first, last, 0.0, box);
+    }
+    double u0 = 0, v0 = 0, u1 = 0, v1 = 0;
+    if (box.IsVoid()) {
+        BRep_Tool::Surface(face)->Bounds(u0, u1, v0, v1);
+        if (Precision::IsInfinite(u0) || Precision::IsInfinite(u1) || Precision::IsInfinite(v0) ||
+            Precision::IsInfinite(v1))
+            throw std::runtime_error("an unbounded surface without trim curves");
+    } else {
+        box.Get(u0, v0, u1, v1);
+    }
+    return Eigen::AlignedBox2d(Eigen::Vector2d(u0, v0), Eigen::Vector2d(u1, v1));
+}
+
+// The model-space edge: its 3D curve (located) where it has one, and its end vertices.
+geom::Edge model_edge(const TopoDS_Edge& located) {
+    const TopoDS_Edge edge = TopoDS::Edge(located.Oriented(TopAbs_FORWARD));
+    geom::Edge out;
+    TopoDS_Vertex v0, v1;
+    TopExp::Vertices(edge, v0, v1);
+    if (!v0.IsNull()) out.start = to_eigen(BRep_Tool::Pnt(v0));
+    if (!v1.IsNull()) out.end = to_eigen(BRep_Tool::Pnt(v1));
+    if (BRep_Tool::Degenerated(edge)) return out;
+    TopLoc_Location loc;
+    double first = 0, last = 0;
+    const Handle(Geom_Curve) c = BRep_Tool::Curve(edge, loc, first, last);
+    if (c.IsNull()) return out;
+    try {
+        geom::NurbsCurve3d curve = translate_curve(c, first, last);
+        if (!loc.IsIdentity()) curve = curve.transformed(to_eigen(loc.Transformation()));
+        out.curve = std::move(curve);
+    } catch (const Standard_Failure&) {
+        // No usable 3D curve: the coedges still carry the p-curves.
+    } catch (const std::exception&) {
+    }
+    return out;
+}
+
+// The wires of `face`, the outer one (BRepTools::OuterWire) first.
+std::vector<TopoDS_Wire> ordered_wires(const TopoDS_Face& face) {
+    const TopoDS_Wire outer = BRepTools::OuterWire(face);
+    std::vector<TopoDS_Wire> wires;
+    if (!outer.IsNull()) wires.push_back(outer);
+    for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next())
+        if (outer.IsNull() || !it.Current().IsSame(outer)) wires.push_back(TopoDS::Wire(it.Current()));
+    return wires;
+}
+
+// One face occurrence to a geom::Face; coedges name their edges by `edges` (index
+// + offset into Model::edges; -1 for an edge not in the map). Throws on failure.
+geom::Face convert_face(const TopoDS_Face& located, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
+    geom::Face out;
+    out.reversed = located.Orientation() == TopAbs_REVERSED;
+    // Loops are read from the forward face, so the outer loop runs counter-clockwise.
+    const TopoDS_Face face = TopoDS::Face(located.Oriented(TopAbs_FORWARD));
+    TopLoc_Location loc;
+    const Handle(Geom_Surface) s = BRep_Tool::Surface(face, loc);
+    if (s.IsNull()) throw std::runtime_error("the face has no surface");
+    TranslatedSurface translated = translate_surface(s, trim_range(face));
+    out.surface = loc.IsIdentity() ? std::move(translated.nurbs)
+                                   : translated.nurbs.transformed(to_eigen(loc.Transformation()));
+    out.surface_kind = translated.kind;
+    // Exchanging u and v turns Su x Sv around (and the loops' sense in (u,v)).
+    if (translated.map.swap) out.reversed = !out.reversed;
+    const auto [u0, u1] = out.surface.domain_u();
+    const auto [v0, v1] = out.surface.domain_v();
+    const double refit_tol = kPcurveRefitShare * std::max(u1 - u0, v1 - v0);
+
+    const TopoDS_Wire outer = BRepTools::OuterWire(face);
+    for (const TopoDS_Wire& wire : ordered_wires(face)) {
+        geom::Loop loop;
+        loop.outer = !outer.IsNull() && wire.IsSame(outer);
+        for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) {
+            const TopoDS_Edge& edge = it.Current();
+            double first = 0, last = 0;
+            const Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(edge, face, first, last);
+            if (c.IsNull()) throw std::runtime_error("an edge has no curve on the face");
+            geom::NurbsCurve2d pcurve = translated.map.map_curve(translate_curve(c, first, last), refit_tol);
+            geom::Coedge coedge;
+            coedge.curve = edge.Orientation() == TopAbs_REVERSED ? pcurve.reversed() : std::move(pcurve);
+            const int index = edges.FindIndex(edge);
+            coedge.edge = index > 0 ? index - 1 + edge_offset : -1;
+            coedge.edge_reversed = edge.Orientation() == TopAbs_REVERSED;
+            loop.coedges.push_back(std::move(coedge));
+        }
+        if (!loop.coedges.empty()) out.loops.push_back(std::move(loop));
+    }
+    if (out.loops.empty()) out.loops.push_back(geom::natural_boundary_loop(out.surface));
+    return out;
+}
+
+// The largest gap between the end of a coedge and the start of the next, relative to
+// the size of the face's domain.
+double loop_gap(const geom::Face& face) {
+    const auto [u0, u1] = face.surface.domain_u();
+    const auto [v0, v1] = face.surface.domain_v();
+    double gap = 0;
+    for (const auto& loop : face.loops)
+        for (size_t k = 0; k < loop.coedges.size(); ++k) {
+            const auto& a = loop.coedges[k].curve;
+            const auto& b = loop.coedges[(k + 1) % loop.coedges.size()].curve;
+            gap = std::max(gap, (a.evaluate(a.domain().second) - b.evaluate(b.domain().first)).norm());
+        }
+    return gap / std::max(u1 - u0, v1 - v0);
+}
+
+// The face healed by ShapeFix_Face (wire order, connection, small edges, missing and
+// gapped p-curves, degenerated edges, wire orientation), and what it did.
+TopoDS_Face healed_face(const TopoDS_Face& face, std::string& done) {
+    Handle(ShapeFix_Face) fix = new ShapeFix_Face(face);
+    // P-curves whose ends miss their vertices are dropped and projected again from
+    // the 3D curves; the remaining gaps are closed in 2D and 3D.
+    fix->FixWireTool()->FixRemovePCurveMode() = 1;
+    fix->FixWireTool()->FixAddPCurveMode() = 1;
+    fix->FixWireTool()->FixGaps2dMode() = 1;
+    fix->FixWireTool()->FixGaps3dMode() = 1;
+    fix->Perform();
+    const Handle(ShapeFix_Wire) wire = fix->FixWireTool();
+    std::vector<std::string> what;
+    if (wire->StatusReorder(ShapeExtend_DONE)) what.push_back("wire order");
+    if (wire->StatusConnected(ShapeExtend_DONE)) what.push_back("edge ends connected");
+    if (wire->StatusSmall(ShapeExtend_DONE)) what.push_back("small edges removed");
+    if (wire->StatusEdgeCurves(ShapeExtend_DONE)) what.push_back("p-curves rebuilt");
+    if (wire->StatusGaps2d(ShapeExtend_DONE)) what.push_back("2D gaps closed");
+    if (wire->StatusGaps3d(ShapeExtend_DONE)) what.push_back("3D gaps closed");
+    if (wire->StatusDegenerated(ShapeExtend_DONE)) what.push_back("degenerated edges");
+    if (wire->StatusLacking(ShapeExtend_DONE)) what.push_back("lacking edges added");
+    if (what.empty() && fix->Status(ShapeExtend_DONE1)) what.push_back("wires fixed");
+    if (fix->Status(ShapeExtend_DONE2)) what.push_back("wire orientation");
+    if (fix->Status(ShapeExtend_DONE3)) what.push_back("seam added");
+    if (fix->Status(ShapeExtend_DONE5)) what.push_back("natural bounds added");
+    for (const std::string& w : what) done += (done.empty() ? "" : ", ") + w;
+    if (done.empty()) done = "no change";
+    TopoDS_Face out = fix->Face();
+    out.Orientation(face.Orientation());
+    return out;
+}
+
+// The edge indices of a face's coedges, loop by loop, in convert_face's order.
+std::vector<std::vector<int>> coedge_edges(const TopoDS_Face& located, const TopTools_IndexedMapOfShape& edges,
+                                           int edge_offset) {
+    const TopoDS_Face face = TopoDS::Face(located.Oriented(TopAbs_FORWARD));
+    std::vector<std::vector<int>> ids;
+    for (const TopoDS_Wire& wire : ordered_wires(face)) {
+        std::vector<int> loop;
+        for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) {
+            const int index = edges.FindIndex(it.Current());
+            loop.push_back(index > 0 ? index - 1 + edge_offset : -1);
+        }
+        if (!loop.empty()) ids.push_back(std::move(loop));
+    }
+    return ids;
+}
+
+// A face whose surface kind has no direct translation, converted by OCCT's
+// NurbsConvert on its own; coedges keep the original face's shared edges.
+geom::Face converted_face(const TopoDS_Face& located, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
+    const TopoDS_Face alone = TopoDS::Face(BRepBuilderAPI_NurbsConvert(located, true).Shape());
+    geom::Face out = convert_face(alone, TopTools_IndexedMapOfShape(), 0);
+    out.surface_kind = surface_kind_name(BRep_Tool::Surface(located));
+    const auto ids = coedge_edges(located, edges, edge_offset);
+    if (ids.size() != out.loops.size()) return out;  // natural boundary, or changed loops: not shared
+    for (size_t l = 0; l < ids.size(); ++l) {
+        if (ids[l].size() != out.loops[l].coedges.size()) continue;
+        for (size_t k = 0; k < ids[l].size(); ++k) out.loops[l].coedges[k].edge = ids[l][k];
+    }
+    return out;
+}
+
+geom::Face translated_face(const TopoDS_Face& face, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
+    try {
+        return convert_face(face, edges, edge_offset);
+    } catch (const UntranslatedKind&) {
+        return converted_face(face, edges, edge_offset);
+    }
+}
+
+// The face translated, healed and translated again when its loops do not close.
+geom::Face checked_face(const TopoDS_Face& face, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
+    std::string failure;
+    std::optional<geom::Face> best;
+    double gap = 0;
+    try {
+        best = translated_face(face, edges, edge_offset);
+        gap = loop_gap(*best);
+        if (gap <= kLoopGapRetry) return std::move(*best);
+        failure = "trim loops are not closed (relative gap " + geom::format_value(gap) + ")";
+    } catch (const Standard_Failure& e) {
+        failure = failure_text(e);
+    } catch (const std::exception& e) {
+        failure = e.what();
+    }
+    std::string done;
+    try {
+        geom::Face healed = translated_face(healed_face(face, done), edges, edge_offset);
+        const double healed_gap = loop_gap(healed);
+        if (!best || healed_gap < gap) {
+            healed.warnings.push_back("healed by ShapeFix_Face (" + done + "): " + failure);
+            best = std::move(healed);
+            gap = healed_gap;
+        }
+    } catch (const Standard_Failure& e) {
+        if (!best) throw std::runtime_error(failure + "; healing failed: " + failure_text(e));
+    } catch (const std::exception& e) {
+        if (!best) throw std::runtime_error(failure + "; healing failed: " + e.what());
+    }
+    if (gap > kLoopGapMax)
+        throw std::runtime_error("trim loops are not closed after healing (relative gap " +
+                                 geom::format_value(gap) + ")");
+    return std::move(*best);
+}
+
+}  // namespace
+
+std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& shape, const ShapeStyle& style,
+                           const std::string& fallback_name, int& face_number) {
+    TopTools_IndexedMapOfShape edge_map;
+    TopExp::MapShapes(shape, TopAbs_EDGE, edge_map);
+    const int edge_offset = static_cast<int>(model.edges.size());
+    for (int i = 1; i <= edge_map.Extent(); ++i) model.edges.push_back(model_edge(TopoDS::Edge(edge_map(i))));
+
+    std::vector<TopoDS_Shape> occurrences;
+    std::vector<int> occurrence_face;
+    for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+        const TopoDS_Face& face = TopoDS::Face(it.Current());
+        occurrences.push_back(face);
+        ++face_number;
+        try {
+            OCC_CATCH_SIGNALS
+            geom::Face converted = checked_face(face, edge_map, edge_offset);
+            converted.source_entity = face_number;
+            if (style.color) converted.color = style.color(face, model);
+            model.faces.push_back(std::move(converted));
+            occurrence_face.push_back(static_cast<int>(model.faces.size()) - 1);
+            continue;
+        } catch (const Standard_Failure& e) {
+            model.warnings.push_back("face " + std::to_string(face_number) + " skipped: " + failure_text(e));
+        } catch (const std::exception& e) {
+            model.warnings.push_back("face " + std::to_string(face_number) + " skipped: " + e.what());
+        }
+        occurrence_face.push_back(-1);
+    }
+
+    // Bodies: solids, then shells outside solids, then (if neither) all faces as one;
+    // faces are matched to occurrences by (TShape, location, orientation), each once.
+    std::vector<bool> used(occurrences.size(), false);
+    size_t next = 0;  // explorers visit faces in the same order, so the search starts here
+    auto faces_of = [&](const TopoDS_Shape& part) {
+        std::vector<int> ids;
+        for (TopExp_Explorer it(part, TopAbs_FACE); it.More(); it.Next())
+            for (size_t step = 0; step < occurrences.size(); ++step) {
+                const size_t k = (next + step) % occurrences.size();
+                if (!used[k] && occurrences[k].IsEqual(it.Current())) {
+                    used[k] = true;
+                    next = k + 1;
+                    if (occurrence_face[k] >= 0) ids.push_back(occurrence_face[k]);
+                    break;
+                }
+            }
+        return ids;
+    };
+    std::vector<int> bodies;
+    auto add_body = [&](const TopoDS_Shape& part, const std::string& kind, bool closed) {
+        geom::Body body;
+        body.name = style.name ? style.name(part) : std::string();
+        if (body.name.empty()) body.name = fallback_name.empty() ? kind + " " + std::to_string(model.bodies.size() + 1)
+                                                                 : fallback_name;
+        body.closed = closed;
+        body.faces = faces_of(part);
+        const int color = style.color ? style.color(part, model) : -1;
+        for (int f : body.faces)
+            if (model.faces[f].color < 0) model.faces[f].color = color;
+        if (body.faces.empty()) return;
+        model.bodies.push_back(std::move(body));
+        bodies.push_back(static_cast<int>(model.bodies.size()) - 1);
+    };
+    for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) add_body(it.Current(), "solid", true);
+    for (TopExp_Explorer it(shape, TopAbs_SHELL, TopAbs_SOLID); it.More(); it.Next())
+        add_body(it.Current(), "shell", BRep_Tool::IsClosed(it.Current()));
+    // Faces in no shell: one body of their own (an assembly part must be placeable).
+    geom::Body loose;
+    for (size_t k = 0; k < occurrences.size(); ++k)
+        if (!used[k] && occurrence_face[k] >= 0) loose.faces.push_back(occurrence_face[k]);
+    if (!loose.faces.empty()) {
+        loose.name = fallback_name.empty() ? "faces " + std::to_string(model.bodies.size() + 1) : fallback_name;
+        model.bodies.push_back(std::move(loose));
+        bodies.push_back(static_cast<int>(model.bodies.size()) - 1);
+    }
+    return bodies;
+}
+
+}  // namespace trimkit::io

@@ -1,0 +1,51 @@
+// Small pieces every Open CASCADE reader of io shares (compiled only with
+// TRIMKIT_WITH_OCCT): a guard that turns OCCT's memory faults into exceptions,
+// OCCT's stdout printer removed, exception text, and OCCT -> Eigen conversions.
+#pragma once
+
+#include <csignal>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <Standard_Failure.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Trsf.hxx>
+
+namespace trimkit::io {
+
+// While alive, OCCT's signal handlers are installed so that a memory fault inside it
+// (OCCT 7.6 dereferences null handles for some broken references) jumps to
+// OCC_CATCH_SIGNALS and is thrown as a Standard_Failure instead of killing the
+// process, Blender included. The process's own handlers are restored afterwards.
+class OcctSignalGuard {
+public:
+    OcctSignalGuard();
+    ~OcctSignalGuard();
+    OcctSignalGuard(const OcctSignalGuard&) = delete;
+    OcctSignalGuard& operator=(const OcctSignalGuard&) = delete;
+
+private:
+    struct sigaction saved_[NSIG] = {};
+};
+
+// OCCT's default messenger prints transfer messages on stdout, which would corrupt
+// `trimkit ... --json` output; drops that printer once per process.
+void silence_occt_stdout();
+
+// "Standard_DomainError: message" for an OCCT exception.
+std::string failure_text(const Standard_Failure& e);
+
+inline Eigen::Vector3d to_eigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+Eigen::Affine3d to_eigen(const gp_Trsf& t);
+
+// Knots with each value repeated by its multiplicity (OCCT stores them apart), 1-based.
+template <class Get, class Mult>
+std::vector<double> expanded_knots(int count, Get knot, Mult multiplicity) {
+    std::vector<double> U;
+    for (int i = 1; i <= count; ++i)
+        for (int k = 0; k < multiplicity(i); ++k) U.push_back(knot(i));
+    return U;
+}
+
+}  // namespace trimkit::io

@@ -1,0 +1,118 @@
+#include "io/occt_models.h"
+
+#include <stdexcept>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepLib.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <GC_MakeArcOfCircle.hxx>
+#include <GC_MakeSegment.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom_Circle.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <STEPCAFControl_Writer.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Lin2d.hxx>
+#include <gp_Trsf.hxx>
+
+namespace trimkit::test {
+
+void write_plate_with_holes_step(const std::string& path, double L, double W, double H,
+                                 const std::vector<Eigen::Vector2d>& centres, double r) {
+    TopoDS_Shape plate = BRepPrimAPI_MakeBox(L, W, H).Shape();
+    for (const Eigen::Vector2d& c : centres) {
+        const gp_Ax2 axis(gp_Pnt(c.x(), c.y(), -1.0), gp_Dir(0, 0, 1));
+        plate = BRepAlgoAPI_Cut(plate, BRepPrimAPI_MakeCylinder(axis, r, H + 2.0).Shape()).Shape();
+    }
+    STEPControl_Writer writer;
+    if (writer.Transfer(plate, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path.c_str()) != IFSelect_RetDone)
+        throw std::runtime_error("cannot write " + path);
+}
+
+void write_cylinder_face_brep(const std::string& path, double R, double h, double u0, double u1) {
+    Handle(Geom_CylindricalSurface) cylinder = new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), R);
+    const TopoDS_Face face = BRepBuilderAPI_MakeFace(cylinder, u0, u1, 0.0, h, 1e-7).Face();
+    if (!BRepTools::Write(face, path.c_str())) throw std::runtime_error("cannot write " + path);
+}
+
+void write_damaged_cylinder_face_brep(const std::string& path, double R, double h, double gap) {
+    Handle(Geom_CylindricalSurface) cylinder = new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), R);
+    BRep_Builder b;
+    const double q = M_PI / 2;
+    const gp_Pnt p00(R, 0, 0), p10(0, R, 0), p11(0, R, h), p01(R, 0, h);
+    TopoDS_Vertex v00, v10, v11, v01;
+    for (auto [v, p] : {std::pair{&v00, p00}, {&v10, p10}, {&v11, p11}, {&v01, p01}}) b.MakeVertex(*v, p, 1e-7);
+    const gp_Circ bottom(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), gp_Dir(1, 0, 0)), R);
+    const gp_Circ top(gp_Ax2(gp_Pnt(0, 0, h), gp_Dir(0, 0, 1), gp_Dir(1, 0, 0)), R);
+    TopoDS_Face face;
+    b.MakeFace(face, cylinder, 1e-7);
+    // Edges with 3D curves and p-curves: (u, v) = (θ, z).
+    auto edge = [&](const Handle(Geom_Curve)& c, double f, double l, const TopoDS_Vertex& a,
+                    const TopoDS_Vertex& z, const Handle(Geom2d_Curve)& pc) {
+        TopoDS_Edge e;
+        b.MakeEdge(e, c, 1e-7);
+        b.Add(e, a.Oriented(TopAbs_FORWARD));
+        b.Add(e, z.Oriented(TopAbs_REVERSED));
+        b.Range(e, f, l);
+        if (!pc.IsNull()) b.UpdateEdge(e, pc, face, 1e-7);
+        return e;
+    };
+    const Handle(Geom2d_Curve) bottom_pc =
+        gap > 0 ? Handle(Geom2d_Curve)(new Geom2d_Line(gp_Pnt2d(0, gap), gp_Dir2d(1, 0))) : Handle(Geom2d_Curve)();
+    const TopoDS_Edge e0 = edge(new Geom_Circle(bottom), 0, q, v00, v10, bottom_pc);
+    const TopoDS_Edge e1 = edge(GC_MakeSegment(p10, p11).Value(), 0, h, v10, v11,
+                                new Geom2d_Line(gp_Pnt2d(q, 0), gp_Dir2d(0, 1)));
+    const TopoDS_Edge e2 = edge(new Geom_Circle(top), 0, q, v01, v11, new Geom2d_Line(gp_Pnt2d(0, h), gp_Dir2d(1, 0)));
+    const TopoDS_Edge e3 = edge(GC_MakeSegment(p00, p01).Value(), 0, h, v00, v01,
+                                new Geom2d_Line(gp_Pnt2d(0, 0), gp_Dir2d(0, 1)));
+    TopoDS_Wire wire;
+    b.MakeWire(wire);
+    b.Add(wire, e0);
+    b.Add(wire, e1);
+    b.Add(wire, e2.Reversed());
+    b.Add(wire, e3.Reversed());
+    b.Add(face, wire);
+    if (!BRepTools::Write(face, path.c_str())) throw std::runtime_error("cannot write " + path);
+}
+
+void write_box_assembly_step(const std::string& path, double dx, double dy, double dz,
+                             const Eigen::Vector3d& t1, const Eigen::Vector3d& t2) {
+    Handle(TDocStd_Document) doc;
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+    const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+    const TDF_Label part = shapes->AddShape(BRepPrimAPI_MakeBox(dx, dy, dz).Shape(), false);
+    TDataStd_Name::Set(part, "block");
+    const TDF_Label assembly = shapes->NewShape();
+    TDataStd_Name::Set(assembly, "pair");
+    gp_Trsf a, b;
+    a.SetTranslation(gp_Vec(t1.x(), t1.y(), t1.z()));
+    b.SetRotation(gp::OZ(), M_PI / 2);
+    gp_Trsf shift;
+    shift.SetTranslation(gp_Vec(t2.x(), t2.y(), t2.z()));
+    b = shift * b;
+    shapes->AddComponent(assembly, part, TopLoc_Location(a));
+    shapes->AddComponent(assembly, part, TopLoc_Location(b));
+    shapes->UpdateAssemblies();
+    STEPCAFControl_Writer writer;
+    if (!writer.Transfer(doc, STEPControl_AsIs) || writer.Write(path.c_str()) != IFSelect_RetDone)
+        throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace trimkit::test

@@ -1,0 +1,33 @@
+// Test models built with Open CASCADE and written as STEP or .brep files, so that the
+// readers are tested on shapes whose exact areas and placements the tests derive.
+// Compiled into io_tests only when trimkit is built with OCCT (TRIMKIT_WITH_OCCT).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace trimkit::test {
+
+// A plate [0, L] x [0, W] x [0, H] with through holes of radius r along z at `centres`,
+// as an AP214 STEP solid.
+void write_plate_with_holes_step(const std::string& path, double L, double W, double H,
+                                 const std::vector<Eigen::Vector2d>& centres, double r);
+
+// One face of the cylinder of radius R about z, z in [0, h], over the angle range
+// [u0, u1] (natural bounds, e.g. [-π/2, π/2]: the face crosses the seam at u = 0),
+// as a .brep file.
+void write_cylinder_face_brep(const std::string& path, double R, double h, double u0, double u1);
+
+// The cylinder face over [0, π/2] x [0, h] built edge by edge, one of whose p-curves
+// is damaged: `gap` > 0 shifts the p-curve of the bottom arc by gap in v (its ends no
+// longer meet the neighbours' in (u,v)); gap == 0 leaves that edge without a p-curve.
+void write_damaged_cylinder_face_brep(const std::string& path, double R, double h, double gap);
+
+// An assembly "pair" of one part "block" (box dx x dy x dz at the origin) placed twice,
+// translated by t1 and by t2 (the second also turned by 90° about z), as STEP (XCAF).
+void write_box_assembly_step(const std::string& path, double dx, double dy, double dz,
+                             const Eigen::Vector3d& t1, const Eigen::Vector3d& t2);
+
+}  // namespace trimkit::test

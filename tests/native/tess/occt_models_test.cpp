@@ -1,0 +1,157 @@
+// STEP and .brep readers on models built in the test with Open CASCADE (occt_models.h),
+// read and meshed by trimkit and measured against areas and placements derived here:
+// a plate with three holes (STEP), a cylinder face across its seam, damaged p-curves
+// healed by ShapeFix, and an assembly with one part placed twice. Only with OCCT.
+#include <gtest/gtest.h>
+
+#if TRIMKIT_HAVE_OCCT_MODELS
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "geom/flatten_instances.h"
+#include "io/occt_models.h"
+#include "io/read_brep.h"
+#include "io/read_model.h"
+#include "io/read_step.h"
+#include "tess/tessellate_model.h"
+
+namespace trimkit {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string temp_path(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("trimkit_" + name)).string();
+}
+
+// Area of the triangles of `mesh` with face id `face` (-1: all).
+double mesh_area(const mesh::Mesh& mesh, int face = -1) {
+    double area = 0;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (face >= 0 && mesh.face_ids[t] != face) continue;
+        const auto& tri = mesh.triangles[t];
+        area += 0.5 * (mesh.positions[tri[1]] - mesh.positions[tri[0]])
+                          .cross(mesh.positions[tri[2]] - mesh.positions[tri[0]])
+                          .norm();
+    }
+    return area;
+}
+
+tess::TessellationResult mesh_at(const geom::Model& model, double tolerance) {
+    tess::TessellationOptions options;
+    options.tolerance = tolerance;
+    options.threads = 1;
+    return tess::tessellate_model(model, options);
+}
+
+#define REQUIRE_OCCT() \
+    if (!io::step_supported()) GTEST_SKIP() << "trimkit built without Open CASCADE"
+
+// A polygon inscribed in a circle within chord error T loses at most 2πr·T of its area
+// (each chord's segment is thinner than T): the bound of every curved boundary here.
+double curved_boundary_bound(double length, double T) { return length * T; }
+
+TEST(OcctModels, PlateWithThreeHolesFromStepKeepsItsHoles) {
+    REQUIRE_OCCT();
+    const double L = 100, W = 60, H = 10, r = 8, T = 0.01;
+    const std::string path = temp_path("plate3.step");
+    test::write_plate_with_holes_step(path, L, W, H, {{20, 30}, {50, 30}, {80, 30}}, r);
+    const geom::Model model = io::read_model(path);
+    ASSERT_EQ(model.bodies.size(), 1u);
+    EXPECT_TRUE(model.bodies[0].closed);
+    int holed_planes = 0, cylinders = 0;
+    for (const geom::Face& f : model.faces) {
+        if (f.surface_kind == "plane" && f.loops.size() == 4) ++holed_planes;
+        if (f.surface_kind == "cylinder") ++cylinders;
+    }
+    EXPECT_EQ(holed_planes, 2);  // top and bottom, each with three holes
+    EXPECT_GE(cylinders, 3);
+    const tess::TessellationResult result = mesh_at(model, T);
+    EXPECT_TRUE(result.failed_faces.empty());
+    EXPECT_EQ(result.open_edges, 0u);
+    const double hole_length = 3 * 2 * kPi * r;
+    for (size_t f = 0; f < model.faces.size(); ++f) {
+        if (model.faces[f].loops.size() != 4) continue;
+        const double exact = L * W - 3 * kPi * r * r;
+        EXPECT_NEAR(mesh_area(result.mesh, static_cast<int>(f)), exact, curved_boundary_bound(hole_length, T))
+            << "face " << f;
+    }
+    const double exact_total = 2 * (L * W - 3 * kPi * r * r) + 2 * (L + W) * H + 3 * 2 * kPi * r * H;
+    EXPECT_NEAR(mesh_area(result.mesh), exact_total, curved_boundary_bound(2 * hole_length, T) + 3 * 2 * kPi * r * H * T / r);
+    std::filesystem::remove(path);
+}
+
+TEST(OcctModels, CylinderFaceAcrossTheSeamIsWhole) {
+    REQUIRE_OCCT();
+    const double R = 10, h = 5, T = 0.005;
+    const std::string path = temp_path("seam.brep");
+    test::write_cylinder_face_brep(path, R, h, -kPi / 2, kPi / 2);
+    const geom::Model model = io::read_model(path);
+    ASSERT_EQ(model.faces.size(), 1u);
+    EXPECT_EQ(model.faces[0].surface_kind, "cylinder");
+    const tess::TessellationResult result = mesh_at(model, T);
+    ASSERT_TRUE(result.failed_faces.empty());
+    // Half a turn: area π R h; the chords of a radius-R arc lose at most T/R of it.
+    EXPECT_NEAR(mesh_area(result.mesh), kPi * R * h, kPi * R * h * T / R);
+    for (const Eigen::Vector3d& p : result.mesh.positions) EXPECT_GE(p.x(), -1e-9);  // u in [-π/2, π/2]: x >= 0
+    std::filesystem::remove(path);
+}
+
+TEST(OcctModels, GappedAndMissingPcurvesAreHealedByShapeFix) {
+    REQUIRE_OCCT();
+    const double R = 10, h = 4, T = 0.005;
+    for (double gap : {0.2, 0.0}) {
+        const std::string path = temp_path("damaged.brep");
+        test::write_damaged_cylinder_face_brep(path, R, h, gap);
+        const geom::Model model = io::read_model(path);
+        ASSERT_EQ(model.faces.size(), 1u) << "gap " << gap;
+        bool healed = false;
+        for (const std::string& w : model.faces[0].warnings) healed = healed || w.find("ShapeFix") != std::string::npos;
+        for (const std::string& w : model.warnings) healed = healed || w.find("ShapeFix") != std::string::npos;
+        EXPECT_TRUE(healed) << "gap " << gap;
+        const tess::TessellationResult result = mesh_at(model, T);
+        ASSERT_TRUE(result.failed_faces.empty()) << result.failed_faces[0].reason;
+        EXPECT_NEAR(mesh_area(result.mesh), R * kPi / 2 * h, R * kPi / 2 * h * T / R) << "gap " << gap;
+        std::filesystem::remove(path);
+    }
+}
+
+TEST(OcctModels, AssemblyPartPlacedTwiceIsOneBodyTwoInstances) {
+    REQUIRE_OCCT();
+    const double dx = 10, dy = 4, dz = 2;
+    const Eigen::Vector3d t1(100, 0, 0), t2(0, 50, 7);
+    const std::string path = temp_path("pair.step");
+    test::write_box_assembly_step(path, dx, dy, dz, t1, t2);
+    const geom::Model model = io::read_model(path);
+    ASSERT_EQ(model.bodies.size(), 1u);
+    EXPECT_EQ(model.faces.size(), 6u);
+    ASSERT_EQ(model.instances.size(), 2u);
+    EXPECT_EQ(model.bodies[0].name, "block");
+    // The first copy only moves; the second turns by 90° about z, then moves.
+    Eigen::Affine3d second = Eigen::Translation3d(t2) * Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitZ());
+    EXPECT_TRUE(model.instances[0].transform.matrix().isApprox(Eigen::Affine3d(Eigen::Translation3d(t1)).matrix(), 1e-9));
+    EXPECT_TRUE(model.instances[1].transform.matrix().isApprox(second.matrix(), 1e-9));
+    ASSERT_EQ(model.instances[0].path.size(), 1u);
+    EXPECT_EQ(model.instances[0].path[0], "pair");
+    // Flattened: the boxes' corners where the placements put them.
+    const geom::Model flat = geom::flatten_instances(model);
+    const tess::TessellationResult result = mesh_at(flat, 0.01);
+    EXPECT_EQ(result.mesh.triangle_count(), 2u * 12u);
+    Eigen::AlignedBox3d first, other;
+    for (size_t t = 0; t < result.mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k)
+            (result.mesh.face_ids[t] < 6 ? first : other).extend(result.mesh.positions[result.mesh.triangles[t][k]]);
+    EXPECT_TRUE(first.min().isApprox(t1, 1e-9));
+    EXPECT_TRUE(first.max().isApprox(t1 + Eigen::Vector3d(dx, dy, dz), 1e-9));
+    EXPECT_TRUE(other.min().isApprox(t2 + Eigen::Vector3d(-dy, 0, 0), 1e-9));
+    EXPECT_TRUE(other.max().isApprox(t2 + Eigen::Vector3d(0, dx, dz), 1e-9));
+    EXPECT_NEAR(mesh_area(result.mesh), 2 * 2 * (dx * dy + dy * dz + dx * dz), 1e-9);
+    std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace trimkit
+#else
+TEST(OcctModels, NeedOpenCascade) { GTEST_SKIP() << "trimkit built without Open CASCADE"; }
+#endif
