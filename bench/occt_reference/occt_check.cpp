@@ -56,6 +56,7 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
+#include <Geom2d_Curve.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Precision.hxx>
 #include <STEPControl_Reader.hxx>
@@ -67,7 +68,6 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
-#include <UnitsMethods.hxx>
 
 #include <algorithm>
 #include <array>
@@ -116,6 +116,9 @@ constexpr int kRefined = 32;
 // below kNewtonStep times D.
 constexpr int kNewtonIterations = 30;
 constexpr double kNewtonStep = 1e-13;
+// Points of the pcurve of a degenerate edge (which has no 3D polyline) in a face's
+// (u,v) polygon.
+constexpr int kDegenerateSamples = 64;
 // Faces with an exact area below this share of D^2 are not checked for area mismatch.
 constexpr double kTinyArea = 1e-12;
 
@@ -148,7 +151,12 @@ std::string num(double x) {
   return b;
 }
 
-std::string json_point(Vec3 p) { return "[" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + "]"; }
+// A point with 17 significant digits (OCCT_CHECK_POINT retraces exactly that point).
+std::string json_point(Vec3 p) {
+  char b[96];
+  std::snprintf(b, sizeof b, "[%.17g, %.17g, %.17g]", p.x, p.y, p.z);
+  return b;
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -171,9 +179,10 @@ Model read_model(const std::string& path) {
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw std::runtime_error("read failed");
     reader.TransferRoots();
     model.shape = reader.OneShape();
-    // UnitValue: the file's unit in metres; OCCT's output unit in mm (xstep.cad.unit).
-    model.unit = reader.IGESModel()->GlobalSection().UnitValue() * 1000.0 /
-                 UnitsMethods::GetCasCadeLengthUnit();
+    // The file's unit and OCCT's output unit. The header says UnitValue() is in metres,
+    // but OCCT 7.6.3 gives it in mm like CascadeUnit() (1 for an mm file, 25.4 for inches).
+    const IGESData_GlobalSection& global = reader.IGESModel()->GlobalSection();
+    model.unit = global.UnitValue() / global.CascadeUnit();
   } else if (ext == "stp" || ext == "step") {
     STEPControl_Reader reader;
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw std::runtime_error("read failed");
@@ -190,6 +199,87 @@ Model read_model(const std::string& path) {
 // ---------------------------------------------------------------------------------------
 // The reference: OCCT's faces, their edges and a fine triangulation with (u,v).
 
+// The trimmed domain of a face in (u,v) as segments of its pcurves (sampled densely), for
+// an even-odd crossing test. Every edge occurrence counts (a seam's two pcurves,
+// degenerate edges' pcurves), so the loops close in (u,v) without ordering them. A ray
+// along u is tried first, then one along v: a ray is not trusted when it passes within a
+// rounding distance of a segment's end (a point level with an iso-line edge or a vertex,
+// where ends of neighbouring pcurves differ by rounding) or when its two directions
+// disagree. Segments are binned in bands across each ray direction.
+class UvPolygon {
+ public:
+  bool empty() const { return segments_.empty(); }
+  void add(double u0, double v0, double u1, double v1) { segments_.push_back({u0, v0, u1, v1}); }
+  void dump() const {
+    for (const auto& s : segments_) std::fprintf(stderr, "  seg %.17g %.17g -> %.17g %.17g\n", s[0], s[1], s[2], s[3]);
+  }
+  void finish() {
+    if (segments_.empty()) return;
+    for (int axis = 0; axis < 2; ++axis) bins_[axis].build(segments_, axis);
+  }
+  // 1 inside, 0 outside, -1 when no ray can tell.
+  int contains(double u, double v) const {
+    for (int axis = 1; axis >= 0; --axis) {  // bands across v (a ray along u) first
+      const int state = bins_[axis].parity(segments_, u, v, axis);
+      if (state >= 0) return state;
+    }
+    return -1;
+  }
+
+ private:
+  // Bands across coordinate `axis` (0: u, 1: v) for rays along the other one.
+  struct Bins {
+    double lo = 0, width = 1, eps = 0;
+    std::vector<std::vector<int>> bands;
+
+    int band(double x) const {
+      return std::clamp(static_cast<int>((x - lo) / width), 0, static_cast<int>(bands.size()) - 1);
+    }
+    void build(const std::vector<std::array<double, 4>>& segments, int axis) {
+      lo = std::numeric_limits<double>::infinity();
+      double hi = -lo;
+      for (const auto& s : segments) {
+        lo = std::min({lo, s[axis], s[axis + 2]});
+        hi = std::max({hi, s[axis], s[axis + 2]});
+      }
+      eps = 1e-9 * std::max(hi - lo, 1e-300);
+      const int n = std::clamp(static_cast<int>(segments.size() / 4), 1, 4096);
+      width = (hi - lo) / n;
+      if (!(width > 0)) width = 1, lo -= 0.5;
+      bands.assign(n, {});
+      for (int k = 0; k < static_cast<int>(segments.size()); ++k) {
+        const auto& s = segments[k];
+        const int a = band(std::min(s[axis], s[axis + 2]) - eps), b = band(std::max(s[axis], s[axis + 2]) + eps);
+        for (int i = a; i <= b; ++i) bands[i].push_back(k);
+      }
+    }
+    // Parity of the crossings of the rays from (u, v) along the other axis; -1 if a ray
+    // comes within eps of a segment's end or the two directions disagree.
+    int parity(const std::vector<std::array<double, 4>>& segments, double u, double v, int axis) const {
+      const double level = axis == 1 ? v : u, along = axis == 1 ? u : v;
+      if (bands.empty() || level < lo - eps || level > lo + width * bands.size() + eps) return 0;
+      int plus = 0, minus = 0;
+      const int other = 1 - axis;
+      for (const int k : bands[band(level)]) {
+        const auto& s = segments[k];
+        const double a = s[axis], b = s[axis + 2];
+        if (std::abs(a - level) <= eps || std::abs(b - level) <= eps) {
+          // Only a worry if the end is on the ray's line within the segment set's reach.
+          return -1;
+        }
+        if ((a > level) != (b > level)) {
+          const double x = s[other] + (level - a) * (s[other + 2] - s[other]) / (b - a);
+          plus += x > along;
+          minus += x <= along;
+        }
+      }
+      return plus % 2 == minus % 2 ? plus % 2 : -1;
+    }
+  };
+  std::vector<std::array<double, 4>> segments_;  // u0, v0, u1, v1
+  Bins bins_[2];
+};
+
 struct EdgeData {
   TopoDS_Edge edge;
   std::unique_ptr<BRepAdaptor_Curve> curve;
@@ -201,7 +291,8 @@ struct EdgeData {
 struct FaceData {
   TopoDS_Face face;
   std::unique_ptr<BRepAdaptor_Surface> surface;  // null: the face has only a triangulation
-  std::unique_ptr<BRepTopAdaptor_FClass2d> classifier;
+  std::unique_ptr<BRepTopAdaptor_FClass2d> classifier;  // used where uv_polygon is not
+  UvPolygon uv_polygon;
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;  // UV bounds (BRepTools::UVBounds)
   double area = 0;
   std::vector<int> edges;
@@ -213,6 +304,7 @@ struct FaceData {
   std::vector<int> segment_edge;
   std::unique_ptr<TriangleBvh> boundary;
   bool grid = false;       // sampled on a (u,v) grid (no usable fine triangulation)
+  double grid_cell = 0;    // the grid's largest cell diagonal in 3D
   double deviation = 0;    // measured distance of the fine triangles from the surface
   double fine_area = 0;
   double brepmesh_area = 0;  // of BRepMesh's triangulation, before any grid fallback
@@ -339,15 +431,16 @@ double project_on_curve(const EdgeData& e, Vec3 p, double& t, double D) {
 
 class Reference {
  public:
-  // near_boundary: within this 3D distance of a face's edges the exact classifier decides.
+  // near_boundary: within this 3D distance of a face's edges, the distance to a face is the
+  // smaller of the foot's and the boundary's.
   Reference(const TopoDS_Shape& shape, double D, double fine_deflection, int samples, double near_boundary)
       : D_(D), fine_deflection_(fine_deflection), near_boundary_(near_boundary), samples_(samples) {
     collect_faces(shape);
     collect_edges();
+    for (auto& f : faces_) build_boundary(*f);
     const auto start = std::chrono::steady_clock::now();
     mesh_fine(shape);
     fine_seconds = seconds_since(start);
-    for (auto& f : faces_) build_boundary(*f);
   }
 
   int face_count() const { return static_cast<int>(faces_.size()); }
@@ -387,10 +480,14 @@ class Reference {
   // surface points), the exact surface at a barycentric grid of each fine (u,v) triangle,
   // and the points of each edge polyline. Also sets each face's measured `deviation`.
   template <class Visit>
-  void surface_samples(Visit&& visit) {
+  void surface_samples(Visit&& visit_any) {
     const int m = samples_;
     for (std::size_t fi = 0; fi < faces_.size(); ++fi) {
       FaceData& f = *faces_[fi];
+      // A grid face's cells may reach over its boundary: only points on the face count.
+      const auto visit = [&](const SurfaceSample& sample) {
+        if (!f.grid || contains(f, sample.u, sample.v)) visit_any(sample);
+      };
       const auto [begin, end] = face_triangles_[fi];
       std::unordered_set<long long> seen_nodes, seen_sides;
       for (int t = begin; t < end; ++t) {
@@ -431,6 +528,7 @@ class Reference {
     }
     for (std::size_t ei = 0; ei < edges_.size(); ++ei) {
       const EdgeData& e = edges_[ei];
+      const auto& visit = visit_any;
       for (std::size_t k = 0; k < e.p.size(); ++k) {
         SurfaceSample s;
         s.point = e.p[k];
@@ -542,6 +640,7 @@ class Reference {
         fine = std::min(fine, norm(p - occt_reference::closest_on_triangle(p, fine_.points[tri[0]], fine_.points[tri[1]], fine_.points[tri[2]]).point));
       }
       std::fprintf(stderr, "face %zu: exact %.9g fine %.9g\n", fi, dist.Value(), fine);
+      if (std::getenv("OCCT_CHECK_DEBUG")) faces_[fi]->uv_polygon.dump();
     }
   }
   // Per-face figures on stderr (environment variable OCCT_CHECK_DEBUG set).
@@ -559,7 +658,12 @@ class Reference {
   }
 
  private:
-  double face_margin(const FaceData& f) const { return std::max(fine_deflection_, 1.5 * f.deviation); }
+  // How far the face may be from its fine triangles: their measured deviation (with a
+  // safety factor), at least the fine deflection (the boundary chords), and for a grid
+  // face one cell (the grid stops up to a cell short of the boundary).
+  double face_margin(const FaceData& f) const {
+    return std::max({fine_deflection_, 1.5 * f.deviation, f.grid_cell});
+  }
 
   double uv_size(const std::array<int, 3>& tri) const {
     double s = 0;
@@ -658,6 +762,37 @@ class Reference {
       }
     }
     f.boundary = std::make_unique<TriangleBvh>(f.boundary_points, f.boundary_segments);
+    build_uv_polygon(f);
+  }
+
+  // f.uv_polygon from every edge occurrence's pcurve, at the parameters of the edge's 3D
+  // polyline (degenerate edges: kDegenerateSamples even steps); left empty (FClass2d is
+  // used) if a pcurve is missing.
+  void build_uv_polygon(FaceData& f) {
+    if (!f.surface) return;
+    TopTools_IndexedMapOfShape edge_index;
+    for (const int ei : f.edges) edge_index.Add(edges_[ei].edge);
+    for (TopExp_Explorer it(f.face, TopAbs_EDGE); it.More(); it.Next()) {
+      const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+      double first, last;
+      const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, f.face, first, last);
+      if (pcurve.IsNull()) {
+        f.uv_polygon = UvPolygon();
+        return;
+      }
+      std::vector<double> t;
+      const int index = edge_index.FindIndex(edge);
+      if (index > 0 && !BRep_Tool::Degenerated(edge)) t = edges_[f.edges[index - 1]].t;
+      if (t.size() < 2)
+        for (int k = 0; k <= kDegenerateSamples; ++k) t.push_back(first + (last - first) * k / kDegenerateSamples);
+      gp_Pnt2d a = pcurve->Value(t[0]);
+      for (std::size_t k = 1; k < t.size(); ++k) {
+        const gp_Pnt2d b = pcurve->Value(t[k]);
+        f.uv_polygon.add(a.X(), a.Y(), b.X(), b.Y());
+        a = b;
+      }
+    }
+    f.uv_polygon.finish();
   }
 
   // The fine triangulation: BRepMesh at the fine deflection (after removing any stored
@@ -733,7 +868,7 @@ class Reference {
   }
 
   // Grid fallback: an nu x nv grid over the UV bounds, spacing about equal in 3D; a cell
-  // is kept (as two triangles) when its four corners are inside the face.
+  // is kept (as two triangles) when a corner is inside the face.
   void add_grid(FaceData& f, int fi) {
     constexpr int kProbe = 16;
     double lu = 0, lv = 0;
@@ -760,8 +895,7 @@ class Reference {
     for (int j = 0; j <= nv; ++j) {
       for (int i = 0; i <= nu; ++i) {
         const double u = f.u0 + (f.u1 - f.u0) * i / nu, v = f.v0 + (f.v1 - f.v0) * j / nv;
-        const TopAbs_State state = f.classifier->Perform(gp_Pnt2d(u, v));
-        inside[j * (nu + 1) + i] = state == TopAbs_IN || state == TopAbs_ON;
+        inside[j * (nu + 1) + i] = contains(f, u, v);
         fine_.points.push_back(surface_point(f, u, v));
         fine_.uv.push_back({u, v});
       }
@@ -769,7 +903,13 @@ class Reference {
     for (int j = 0; j < nv; ++j) {
       for (int i = 0; i < nu; ++i) {
         const int a = j * (nu + 1) + i, b = a + 1, c = a + nu + 1, d = c + 1;
-        if (!(inside[a] && inside[b] && inside[c] && inside[d])) continue;
+        // Cells with a corner on the face are kept, so that the grid reaches the face's
+        // boundary within one cell (for finding candidate faces); samples are only taken
+        // where they are on the face (surface_samples).
+        if (!(inside[a] || inside[b] || inside[c] || inside[d])) continue;
+        const Vec3 pa = fine_.points[base + a], pd = fine_.points[base + d];
+        const Vec3 pb = fine_.points[base + b], pc = fine_.points[base + c];
+        f.grid_cell = std::max({f.grid_cell, norm(pd - pa), norm(pc - pb)});
         fine_.triangles.push_back({base + a, base + b, base + d});
         fine_.triangles.push_back({base + a, base + d, base + c});
         fine_.face.push_back(fi);
@@ -803,18 +943,23 @@ class Reference {
     return inside ? std::min(d, boundary) : boundary;
   }
 
-  // Whether (u, v) is on the trimmed face: BRepTopAdaptor_FClass2d (polygons of the
-  // pcurves), confirmed by the exact BRepClass_FaceClassifier when the point is within the
-  // near-boundary distance of the face's edges in 3D (then *near is set).
+  // Whether (u, v) is on the trimmed face: the face's (u,v) polygon (BRepTopAdaptor_FClass2d
+  // where it has none). *near: the point is within the near-boundary distance of the
+  // face's edges in 3D, where the caller also takes the boundary's distance.
   bool contains(const FaceData& f, double u, double v, bool* near = nullptr) const {
-    const TopAbs_State state = f.classifier->Perform(gp_Pnt2d(u, v));
-    bool inside = state == TopAbs_IN || state == TopAbs_ON;
-    if (f.boundary && !f.boundary_segments.empty() &&
-        f.boundary->nearest(surface_point(f, u, v)).distance < near_boundary_) {
-      BRepClass_FaceClassifier exact(f.face, gp_Pnt2d(u, v), Precision::PConfusion());
+    bool inside;
+    const int state = f.uv_polygon.empty() ? -1 : f.uv_polygon.contains(u, v);
+    if (state >= 0) {
+      inside = state == 1;
+    } else if (f.uv_polygon.empty()) {
+      const TopAbs_State fclass = f.classifier->Perform(gp_Pnt2d(u, v));
+      inside = fclass == TopAbs_IN || fclass == TopAbs_ON;
+    } else {  // the polygon cannot tell: OCCT's exact classifier
+      const BRepClass_FaceClassifier exact(f.face, gp_Pnt2d(u, v), Precision::PConfusion());
       inside = exact.State() == TopAbs_IN || exact.State() == TopAbs_ON;
-      if (near) *near = true;
     }
+    if (near && f.boundary && !f.boundary_segments.empty())
+      *near = f.boundary->nearest(surface_point(f, u, v)).distance < near_boundary_;
     return inside;
   }
 
