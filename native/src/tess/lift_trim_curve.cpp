@@ -125,6 +125,24 @@ double max_deviation(const std::vector<Eigen::Vector4d>& H, const std::vector<do
     return e;
 }
 
+// The pseudo-inverse of the Bernstein collocation matrix A(k, j) = B_j^n(k/n), by SVD,
+// for every degree n <= kMaxLiftDegree: A depends on n alone, so each lift is one
+// product instead of one SVD (the lifts were a fifth of a STEP file's meshing time).
+const Eigen::MatrixXd& collocation_inverse(int n) {
+    static const std::vector<Eigen::MatrixXd> table = [] {
+        std::vector<Eigen::MatrixXd> out(kMaxLiftDegree + 1);
+        for (int d = 1; d <= kMaxLiftDegree; ++d) {
+            Eigen::MatrixXd A(d + 1, d + 1);
+            for (int k = 0; k <= d; ++k)
+                for (int j = 0; j <= d; ++j) A(k, j) = bernstein(d, j, double(k) / d);
+            out[d] = Eigen::JacobiSVD<Eigen::MatrixXd>(A, Eigen::ComputeThinU | Eigen::ComputeThinV)
+                         .solve(Eigen::MatrixXd::Identity(d + 1, d + 1));
+        }
+        return out;
+    }();
+    return table[n];
+}
+
 LiftedPiece lift_piece(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, double t0,
                        double t1) {
     LiftedPiece piece;
@@ -142,7 +160,7 @@ LiftedPiece lift_piece(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
         *h << w * *x, w;
     };
     // Fit samples s_k = k/n; check samples: the fit samples and the midpoints.
-    Eigen::MatrixXd A(n + 1, n + 1), rhs(n + 1, 4);
+    Eigen::MatrixXd rhs(n + 1, 4);
     std::vector<double> check_s;
     std::vector<Eigen::Vector3d> check_x;
     Eigen::AlignedBox3d box;
@@ -154,7 +172,6 @@ LiftedPiece lift_piece(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
         sample(s, &h, &x);
         rhs.row(k) = h.transpose();
         w_scale = std::max(w_scale, h.w());
-        for (int j = 0; j <= n; ++j) A(k, j) = bernstein(n, j, s);
         check_s.push_back(s);
         check_x.push_back(x);
         box.extend(x);
@@ -168,8 +185,7 @@ LiftedPiece lift_piece(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
         box.extend(x);
     }
     rhs /= w_scale;  // any common factor of a homogeneous curve; keeps w ~ 1
-    const Eigen::MatrixXd sol =
-        Eigen::JacobiSVD<Eigen::MatrixXd>(A, Eigen::ComputeThinU | Eigen::ComputeThinV).solve(rhs);
+    const Eigen::MatrixXd sol = collocation_inverse(n) * rhs;
     piece.P.resize(n + 1);
     for (int j = 0; j <= n; ++j) piece.P[j] = sol.row(j).transpose();
 

@@ -62,20 +62,33 @@ double binomial(int n, int k) {
     return r;
 }
 
-// f * g for a scalar net f and a vector net g, in Bernstein form.
+// The factors C(a, i) C(b, i') / C(a + b, i + i') of a Bernstein product, i <= a, i' <= b,
+// row-major over (i, i').
+std::vector<double> product_factors(int a, int b) {
+    std::vector<double> out;
+    out.reserve(static_cast<size_t>((a + 1) * (b + 1)));
+    for (int i = 0; i <= a; ++i)
+        for (int i2 = 0; i2 <= b; ++i2) out.push_back(binomial(a, i) * binomial(b, i2) / binomial(a + b, i + i2));
+    return out;
+}
+
+// f * g for a scalar net f and a vector net g, in Bernstein form. The binomial
+// factors are computed once per direction (the hot loop of the surface bound).
 Net product(const ScalarNet& f, const Net& g) {
     Net out;
     out.du = f.du + g.du;
     out.dv = f.dv + g.dv;
     out.c.assign((out.du + 1) * (out.dv + 1), Vec3::Zero());
+    const std::vector<double> fu = product_factors(f.du, g.du), fv = product_factors(f.dv, g.dv);
     for (int i = 0; i <= f.du; ++i)
         for (int i2 = 0; i2 <= g.du; ++i2) {
-            const double cu = binomial(f.du, i) * binomial(g.du, i2) / binomial(out.du, i + i2);
-            for (int j = 0; j <= f.dv; ++j)
-                for (int j2 = 0; j2 <= g.dv; ++j2) {
-                    const double cv = binomial(f.dv, j) * binomial(g.dv, j2) / binomial(out.dv, j + j2);
-                    out.c[(i + i2) * (out.dv + 1) + j + j2] += cu * cv * f.at(i, j) * g.at(i2, j2);
-                }
+            const double cu = fu[i * (g.du + 1) + i2];
+            for (int j = 0; j <= f.dv; ++j) {
+                const double fij = f.at(i, j);
+                Vec3* row = &out.c[(i + i2) * (out.dv + 1) + j];
+                for (int j2 = 0; j2 <= g.dv; ++j2)
+                    row[j2] += cu * fv[j * (g.dv + 1) + j2] * fij * g.at(i2, j2);
+            }
         }
     return out;
 }
