@@ -31,6 +31,8 @@
 
 #include "geom/analytic_curves.h"
 #include "geom/analytic_surfaces.h"
+#include "geom/error.h"
+#include "geom/extrapolate_surface.h"
 #include "io/occt_support.h"
 
 namespace trimkit::io {
@@ -43,6 +45,10 @@ constexpr double kTwoPi = 2.0 * M_PI;
 // Linear parameter ranges of unbounded surfaces are widened by this share of their
 // extent (and at least this much absolutely) so trims on the box's edge stay inside.
 constexpr double kLinearPadShare = 1e-3;
+// B-spline surfaces are continued past their domain for trims that run outside it by
+// at most this share of the domain's length (real files stray by far less; more is
+// a broken file, whose trims are then clamped to the domain).
+constexpr double kMaxExtensionShare = 0.25;
 // Angle ranges are widened by at most this (radians), never beyond one period.
 constexpr double kAnglePad = 1e-9;
 
@@ -152,8 +158,9 @@ geom::NurbsSurface bspline_surface(Handle(Geom_BSplineSurface) s, const Eigen::A
         const double c = out_v ? range.min().y() : v0, d = out_v ? std::min(range.max().y(), c + s->VPeriod()) : v1;
         s->Segment(a, b, c, d);
     }
-    if (s->IsUPeriodic()) s->SetUNotPeriodic();
-    if (s->IsVPeriodic()) s->SetVNotPeriodic();
+    const bool periodic_u = s->IsUPeriodic(), periodic_v = s->IsVPeriodic();
+    if (periodic_u) s->SetUNotPeriodic();
+    if (periodic_v) s->SetVNotPeriodic();
     const int nu = s->NbUPoles(), nv = s->NbVPoles();
     const bool rational = s->IsURational() || s->IsVRational();
     std::vector<Vector3d> P;
@@ -164,11 +171,31 @@ geom::NurbsSurface bspline_surface(Handle(Geom_BSplineSurface) s, const Eigen::A
             P.push_back(to_vec(s->Pole(i, j)));
             if (rational) w.push_back(s->Weight(i, j));
         }
-    return geom::NurbsSurface(
+    geom::NurbsSurface out(
         s->UDegree(), s->VDegree(),
         expanded_knots(s->NbUKnots(), [&](int i) { return s->UKnot(i); }, [&](int i) { return s->UMultiplicity(i); }),
         expanded_knots(s->NbVKnots(), [&](int i) { return s->VKnot(i); }, [&](int i) { return s->VMultiplicity(i); }),
         nu, nv, std::move(P), std::move(w));
+    // Trims past a bounded direction's ends: the surface continues there as OCCT
+    // evaluates it (extrapolate_surface.h), up to kMaxExtensionShare of the domain.
+    const auto [du0, du1] = out.domain_u();
+    const auto [dv0, dv1] = out.domain_v();
+    auto widened = [](double lo, double hi, double want_lo, double want_hi, bool periodic) {
+        const double reach = kMaxExtensionShare * (hi - lo), slack = 1e-9 * (hi - lo);
+        if (periodic) return std::pair{lo, hi};
+        return std::pair{want_lo < lo - slack ? std::max(want_lo, lo - reach) : lo,
+                         want_hi > hi + slack ? std::min(want_hi, hi + reach) : hi};
+    };
+    const auto [eu0, eu1] = widened(du0, du1, range.min().x(), range.max().x(), periodic_u || out_u);
+    const auto [ev0, ev1] = widened(dv0, dv1, range.min().y(), range.max().y(), periodic_v || out_v);
+    if (eu0 != du0 || eu1 != du1 || ev0 != dv0 || ev1 != dv1) {
+        try {
+            return geom::extrapolated_surface(out, eu0, eu1, ev0, ev1);
+        } catch (const geom::NumericalFailure&) {
+            // A rational end span that cannot go on: the trims are clamped to the domain.
+        }
+    }
+    return out;
 }
 
 TranslatedSurface elementary(const Handle(Geom_Surface)& s, const Eigen::AlignedBox2d& range) {

@@ -12,7 +12,13 @@
 #include <GC_MakeArcOfCircle.hxx>
 #include <GC_MakeSegment.hxx>
 #include <Geom2d_Line.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Geom_Circle.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <STEPCAFControl_Writer.hxx>
 #include <STEPControl_Writer.hxx>
@@ -88,6 +94,47 @@ void write_damaged_cylinder_face_brep(const std::string& path, double R, double 
     b.Add(wire, e1);
     b.Add(wire, e2.Reversed());
     b.Add(wire, e3.Reversed());
+    b.Add(face, wire);
+    if (!BRepTools::Write(face, path.c_str())) throw std::runtime_error("cannot write " + path);
+}
+
+void write_bspline_face_past_domain_brep(const std::string& path, double L, double m) {
+    TColgp_Array2OfPnt poles(1, 2, 1, 2);
+    for (int i = 1; i <= 2; ++i)
+        for (int j = 1; j <= 2; ++j) poles(i, j) = gp_Pnt(L * (i - 1), L * (j - 1), 0);
+    TColStd_Array1OfReal knots(1, 2);
+    knots(1) = 0;
+    knots(2) = 1;
+    TColStd_Array1OfInteger mults(1, 2);
+    mults(1) = mults(2) = 2;
+    Handle(Geom_BSplineSurface) surface = new Geom_BSplineSurface(poles, knots, knots, mults, mults, 1, 1);
+    BRep_Builder b;
+    TopoDS_Face face;
+    b.MakeFace(face, surface, 1e-7);
+    const double lo = -m, hi = 1 + m;
+    const gp_Pnt2d uv[4] = {{lo, lo}, {hi, lo}, {hi, hi}, {lo, hi}};
+    TopoDS_Vertex v[4];
+    for (int k = 0; k < 4; ++k) b.MakeVertex(v[k], gp_Pnt(L * uv[k].X(), L * uv[k].Y(), 0), 1e-7);
+    TopoDS_Wire wire;
+    b.MakeWire(wire);
+    for (int k = 0; k < 4; ++k) {
+        const gp_Pnt2d a = uv[k], z = uv[(k + 1) % 4];
+        const double length = a.Distance(z);
+        TopoDS_Edge e;
+        b.MakeEdge(e, GC_MakeSegment(gp_Pnt(L * a.X(), L * a.Y(), 0), gp_Pnt(L * z.X(), L * z.Y(), 0)).Value(), 1e-7);
+        b.Add(e, v[k].Oriented(TopAbs_FORWARD));
+        b.Add(e, v[(k + 1) % 4].Oriented(TopAbs_REVERSED));
+        b.Range(e, 0, L * length);
+        // The p-curve runs with the 3D segment's parameter (arc length in model units).
+        TColgp_Array1OfPnt2d ends(1, 2);
+        ends(1) = a;
+        ends(2) = z;
+        TColStd_Array1OfReal range(1, 2);
+        range(1) = 0;
+        range(2) = L * length;
+        b.UpdateEdge(e, new Geom2d_BSplineCurve(ends, range, mults, 1), face, 1e-7);
+        b.Add(wire, e);
+    }
     b.Add(face, wire);
     if (!BRepTools::Write(face, path.c_str())) throw std::runtime_error("cannot write " + path);
 }

@@ -25,6 +25,11 @@ void write_cylinder_face_brep(const std::string& path, double R, double h, doubl
 // longer meet the neighbours' in (u,v)); gap == 0 leaves that edge without a p-curve.
 void write_damaged_cylinder_face_brep(const std::string& path, double R, double h, double gap);
 
+// A planar B-spline face: the bilinear surface S(u, v) = (L u, L v, 0) on [0, 1]^2,
+// trimmed by the square [-m, 1 + m]^2 in (u, v), past the surface's domain by m on
+// every side (as real files trim B-splines slightly outside their domain), as .brep.
+void write_bspline_face_past_domain_brep(const std::string& path, double L, double m);
+
 // An assembly "pair" of one part "block" (box dx x dy x dz at the origin) placed twice,
 // translated by t1 and by t2 (the second also turned by 90° about z), as STEP (XCAF).
 void write_box_assembly_step(const std::string& path, double dx, double dy, double dz,

@@ -117,6 +117,20 @@ TEST(OcctModels, GappedAndMissingPcurvesAreHealedByShapeFix) {
     }
 }
 
+TEST(OcctModels, BsplineFaceTrimmedPastItsDomainKeepsTheWholeTrim) {
+    REQUIRE_OCCT();
+    const double L = 10, m = 0.05, T = 0.001;
+    const std::string path = temp_path("past_domain.brep");
+    test::write_bspline_face_past_domain_brep(path, L, m);
+    const geom::Model model = io::read_model(path);
+    ASSERT_EQ(model.faces.size(), 1u);
+    const tess::TessellationResult result = mesh_at(model, T);
+    ASSERT_TRUE(result.failed_faces.empty()) << result.failed_faces[0].reason;
+    // The square of side L (1 + 2m), straight trims on a plane: exact up to rounding.
+    EXPECT_NEAR(mesh_area(result.mesh), std::pow(L * (1 + 2 * m), 2), 1e-9 * L * L);
+    std::filesystem::remove(path);
+}
+
 TEST(OcctModels, AssemblyPartPlacedTwiceIsOneBodyTwoInstances) {
     REQUIRE_OCCT();
     const double dx = 10, dy = 4, dz = 2;
