@@ -9,7 +9,12 @@ namespace trimkit::geom {
 
 double AxisMap::apply(double x) const {
     const double y = scale * x + offset;
-    return arc ? arc->to_nurbs(y) : y;
+    if (!arc) return y;
+    if (period > 0.0) {
+        const double k = std::floor((y - arc->theta0()) / period);
+        if (k > 0.0) return arc->to_nurbs(y - k * period) + k * period;
+    }
+    return arc->to_nurbs(y);
 }
 
 Eigen::Vector2d ParameterMap::apply(Eigen::Vector2d st) const {
@@ -22,6 +27,9 @@ bool ParameterMap::identity() const {
 }
 
 namespace {
+
+// Turns of a wound axis whose knot angles become refit breaks.
+constexpr int kMaxTurns = 4;
 
 // True when c is a polyline of axis-parallel segments: the map works on each axis
 // alone and keeps its order, so the image of such a segment is the segment between
@@ -44,7 +52,10 @@ std::vector<double> source_breaks(const AxisMap& a) {
     std::vector<double> out;
     if (!a.arc || a.scale == 0.0) return out;
     const auto& angles = a.arc->angles();
-    for (std::size_t i = 1; i + 1 < angles.size(); ++i) out.push_back((angles[i] - a.offset) / a.scale);
+    const int turns = a.period > 0.0 ? kMaxTurns : 1;
+    for (int k = 0; k < turns; ++k)
+        for (std::size_t i = k == 0 ? 1 : 0; i + 1 < angles.size(); ++i)
+            out.push_back((angles[i] + k * a.period - a.offset) / a.scale);
     return out;
 }
 

@@ -17,6 +17,9 @@ namespace trimkit::geom {
 struct AxisMap {
     double scale = 1.0, offset = 0.0;
     std::optional<ArcParameterMap> arc;  // applied after the affine part
+    // > 0 for a surface wound several times (a thread's face spans more than one turn):
+    // x beyond arc's range by k periods maps as arc.to_nurbs(x - k period) + k period.
+    double period = 0.0;
 
     double apply(double x) const;
     bool affine() const { return !arc.has_value(); }

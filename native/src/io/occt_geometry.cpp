@@ -32,6 +32,7 @@
 #include "geom/analytic_curves.h"
 #include "geom/analytic_surfaces.h"
 #include "geom/error.h"
+#include "geom/extend_closed_surface.h"
 #include "geom/extrapolate_surface.h"
 #include "io/occt_support.h"
 
@@ -51,6 +52,8 @@ constexpr double kLinearPadShare = 1e-3;
 constexpr double kMaxExtensionShare = 0.25;
 // Angle ranges are widened by at most this (radians), never beyond one period.
 constexpr double kAnglePad = 1e-9;
+// A wound surface's boundary rows one turn apart coincide within this share of its size.
+constexpr double kClosureShare = 1e-9;
 
 Vector2d to_vec(const gp_Pnt2d& p) { return {p.X(), p.Y()}; }
 Vector3d to_vec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
@@ -72,11 +75,27 @@ std::pair<double, double> linear_range(double lo, double hi) {
     return {lo - pad, hi + pad};
 }
 
-// [lo, hi] widened by kAnglePad but to at most one period and within [floor, ceil].
+// Sweeps within this of a whole turn are one turn (rounding of 2π in files and bounds).
+constexpr double kTurnSlack = 1e-9;
+
+// [lo, hi] widened by kAnglePad (not past a whole turn) and within [floor, ceil]; a
+// sweep past one turn by more than kTurnSlack is kept (a wound face, see wind()).
 std::pair<double, double> angle_range(double lo, double hi, double floor = -1e300, double ceil = 1e300) {
-    if (hi - lo > kTwoPi) hi = lo + kTwoPi;  // rounding of a full turn
-    const double pad = std::min(kAnglePad, 0.5 * (kTwoPi - (hi - lo)));
+    if (hi - lo > kTwoPi && hi - lo <= kTwoPi + kTurnSlack) hi = lo + kTwoPi;
+    const double pad = hi - lo < kTwoPi ? std::min(kAnglePad, 0.5 * (kTwoPi - (hi - lo))) : 0.0;
     return {std::max(floor, lo - pad), std::min(ceil, hi + pad)};
+}
+
+// The end of the first turn of [a, b].
+double one_turn(double a, double b) { return std::min(b, a + kTwoPi); }
+
+// A surface built over one turn [a, a + 2π] of `direction` wound on to b (its copies
+// joined, extend_closed_surface), and its axis map told the period.
+void wind(TranslatedSurface& out, int direction, double a, double b) {
+    if (b <= a + kTwoPi) return;
+    const Eigen::AlignedBox3d box = out.nurbs.control_box();
+    out.nurbs = geom::extend_closed_surface(out.nurbs, direction, a, b, kClosureShare * box.diagonal().norm());
+    (direction == 0 ? out.map.u : out.map.v).period = kTwoPi;
 }
 
 geom::AxisMap arc_axis(double theta0, double theta1) {
@@ -123,14 +142,16 @@ MappedCurve mapped_curve(Handle(Geom_Curve) c, double first, double last) {
         return {geom::line_segment(to_vec(line->Value(first)), to_vec(line->Value(last)), first, last), {}};
     if (auto circle = Handle(Geom_Circle)::DownCast(c)) {
         const gp_Ax2& ax = circle->Position();
-        const auto [a, b] = angle_range(first, last);
+        const auto [a, b0] = angle_range(first, last);
+        const double b = one_turn(a, b0);
         return {geom::circular_arc(to_vec(ax.Location()), to_vec(ax.XDirection()), to_vec(ax.YDirection()),
                                    circle->Radius(), a, b),
                 arc_axis(a, b)};
     }
     if (auto ellipse = Handle(Geom_Ellipse)::DownCast(c)) {
         const gp_Ax2& ax = ellipse->Position();
-        const auto [a, b] = angle_range(first, last);
+        const auto [a, b0] = angle_range(first, last);
+        const double b = one_turn(a, b0);
         return {geom::ellipse_arc(to_vec(ax.Location()), to_vec(ax.XDirection()), to_vec(ax.YDirection()),
                                   ellipse->MajorRadius(), ellipse->MinorRadius(), a, b),
                 arc_axis(a, b)};
@@ -214,9 +235,11 @@ TranslatedSurface elementary(const Handle(Geom_Surface)& s, const Eigen::Aligned
     if (auto cyl = Handle(Geom_CylindricalSurface)::DownCast(s)) {
         const auto [a, b] = angle_range(s0, s1);
         const auto [z0, z1] = linear_range(t0, t1);
-        out.nurbs = geom::cylinder_patch(O, Z, X, cyl->Radius(), a, b, z0, z1).transformed(frame_of(cyl->Position()));
+        out.nurbs = geom::cylinder_patch(O, Z, X, cyl->Radius(), a, one_turn(a, b), z0, z1)
+                        .transformed(frame_of(cyl->Position()));
         out.kind = "cylinder";
-        out.map.u = arc_axis(a, b);
+        out.map.u = arc_axis(a, one_turn(a, b));
+        wind(out, 0, a, b);
         return out;
     }
     if (auto cone = Handle(Geom_ConicalSurface)::DownCast(s)) {
@@ -224,30 +247,36 @@ TranslatedSurface elementary(const Handle(Geom_Surface)& s, const Eigen::Aligned
         const double alpha = cone->SemiAngle(), c = std::cos(alpha);
         const auto [a, b] = angle_range(s0, s1);
         const auto [v0, v1] = linear_range(t0, t1);
-        out.nurbs = geom::cone_patch(O, Z, X, cone->RefRadius(), alpha, a, b, v0 * c, v1 * c)
+        out.nurbs = geom::cone_patch(O, Z, X, cone->RefRadius(), alpha, a, one_turn(a, b), v0 * c, v1 * c)
                         .transformed(frame_of(cone->Position()));
         out.kind = "cone";
-        out.map.u = arc_axis(a, b);
+        out.map.u = arc_axis(a, one_turn(a, b));
         out.map.v.scale = c;
+        wind(out, 0, a, b);
         return out;
     }
     if (auto sphere = Handle(Geom_SphericalSurface)::DownCast(s)) {
         const auto [a, b] = angle_range(s0, s1);
         const auto [c, d] = angle_range(t0, t1, -0.5 * M_PI, 0.5 * M_PI);
-        out.nurbs = geom::sphere_patch(O, Z, X, sphere->Radius(), a, b, c, d).transformed(frame_of(sphere->Position()));
+        out.nurbs = geom::sphere_patch(O, Z, X, sphere->Radius(), a, one_turn(a, b), c, d)
+                        .transformed(frame_of(sphere->Position()));
         out.kind = "sphere";
-        out.map.u = arc_axis(a, b);
+        out.map.u = arc_axis(a, one_turn(a, b));
         out.map.v = arc_axis(c, d);
+        wind(out, 0, a, b);
         return out;
     }
     if (auto torus = Handle(Geom_ToroidalSurface)::DownCast(s)) {
         const auto [a, b] = angle_range(s0, s1);
         const auto [c, d] = angle_range(t0, t1);
-        out.nurbs = geom::torus_patch(O, Z, X, torus->MajorRadius(), torus->MinorRadius(), a, b, c, d)
+        out.nurbs = geom::torus_patch(O, Z, X, torus->MajorRadius(), torus->MinorRadius(), a, one_turn(a, b), c,
+                                      one_turn(c, d))
                         .transformed(frame_of(torus->Position()));
         out.kind = "torus";
-        out.map.u = arc_axis(a, b);
-        out.map.v = arc_axis(c, d);
+        out.map.u = arc_axis(a, one_turn(a, b));
+        out.map.v = arc_axis(c, one_turn(c, d));
+        wind(out, 0, a, b);
+        wind(out, 1, c, d);
         return out;
     }
     throw UntranslatedKind(std::string("surface kind ") + s->DynamicType()->Name());
@@ -270,11 +299,13 @@ TranslatedSurface swept(const Handle(Geom_Surface)& s, const Eigen::AlignedBox2d
         const MappedCurve g = mapped_curve(rev->BasisCurve(), v0, v1);
         const auto [a, b] = angle_range(s0, s1);
         const gp_Ax1 axis = rev->Axis();
-        out.nurbs = geom::surface_of_revolution(g.curve, to_vec(axis.Location()), to_vec(axis.Direction()), a, b);
+        out.nurbs = geom::surface_of_revolution(g.curve, to_vec(axis.Location()), to_vec(axis.Direction()), a,
+                                                one_turn(a, b));
         out.kind = "revolution";
         out.map.swap = true;
         out.map.u = g.map;
-        out.map.v = arc_axis(a, b);
+        out.map.v = arc_axis(a, one_turn(a, b));
+        wind(out, 1, a, b);
         return out;
     }
     if (auto ext = Handle(Geom_SurfaceOfLinearExtrusion)::DownCast(s)) {

@@ -62,5 +62,15 @@ TEST(ParameterMap, CurveAcrossArcKnotsIsRefittedWithinTheTolerance) {
     EXPECT_GT(mapped.points().size(), 4u);
 }
 
+TEST(ParameterMap, WoundAxisRepeatsTheArcMapEveryPeriod) {
+    AxisMap a;
+    a.arc.emplace(0.0, 2 * kPi);
+    a.period = 2 * kPi;
+    for (double x : {0.3, 1.9, 4.0, 6.0})
+        EXPECT_NEAR(a.apply(x + 2 * kPi), a.apply(x) + 2 * kPi, 1e-12) << x;
+    EXPECT_NEAR(a.apply(2 * kPi), 2 * kPi, 1e-12);  // knots: parameter = angle
+    EXPECT_NEAR(a.apply(3 * kPi), 3 * kPi, 1e-12);
+}
+
 }  // namespace
 }  // namespace trimkit::geom

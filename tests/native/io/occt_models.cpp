@@ -3,7 +3,10 @@
 #include <stdexcept>
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <GCE2d_MakeSegment.hxx>
 #include <BRepLib.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -55,6 +58,19 @@ void write_plate_with_holes_step(const std::string& path, double L, double W, do
 void write_cylinder_face_brep(const std::string& path, double R, double h, double u0, double u1) {
     Handle(Geom_CylindricalSurface) cylinder = new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), R);
     const TopoDS_Face face = BRepBuilderAPI_MakeFace(cylinder, u0, u1, 0.0, h, 1e-7).Face();
+    if (!BRepTools::Write(face, path.c_str())) throw std::runtime_error("cannot write " + path);
+}
+
+void write_helical_strip_brep(const std::string& path, double R, double k, double w, double sweep) {
+    Handle(Geom_CylindricalSurface) cylinder = new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), R);
+    const gp_Pnt2d a(0, 0), b(sweep, k * sweep), c(sweep, k * sweep + w), d(0, w);
+    auto edge = [&](const gp_Pnt2d& p, const gp_Pnt2d& q) {
+        return BRepBuilderAPI_MakeEdge(GCE2d_MakeSegment(p, q).Value(), cylinder).Edge();
+    };
+    BRepBuilderAPI_MakeWire wire(edge(a, b), edge(b, c), edge(c, d), edge(d, a));
+    if (!wire.IsDone()) throw std::runtime_error("helical strip: the wire does not close");
+    TopoDS_Face face = BRepBuilderAPI_MakeFace(cylinder, wire.Wire(), true).Face();
+    BRepLib::BuildCurves3d(face);
     if (!BRepTools::Write(face, path.c_str())) throw std::runtime_error("cannot write " + path);
 }
 

@@ -20,6 +20,12 @@ void write_plate_with_holes_step(const std::string& path, double L, double W, do
 // as a .brep file.
 void write_cylinder_face_brep(const std::string& path, double R, double h, double u0, double u1);
 
+// A helical strip on the cylinder of radius R about z, as a thread's face: in (u, v)
+// the parallelogram between v = k u and v = k u + w for u in [0, sweep] (sweep may
+// exceed 2π: the face winds round more than once), edges built on the surface and
+// their 3D curves from the p-curves (BRepLib::BuildCurves3d), as a .brep file.
+void write_helical_strip_brep(const std::string& path, double R, double k, double w, double sweep);
+
 // The cylinder face over [0, π/2] x [0, h] built edge by edge, one of whose p-curves
 // is damaged: `gap` > 0 shifts the p-curve of the bottom arc by gap in v (its ends no
 // longer meet the neighbours' in (u,v)); gap == 0 leaves that edge without a p-curve.

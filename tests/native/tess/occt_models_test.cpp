@@ -98,6 +98,22 @@ TEST(OcctModels, CylinderFaceAcrossTheSeamIsWhole) {
     std::filesystem::remove(path);
 }
 
+// A thread's face (bottle.brep) winds round its cylinder more than once: its (u, v)
+// trims span more than 2π, so one turn of the surface would cut it short.
+TEST(OcctModels, HelicalStripWoundOneAndAHalfTurnsIsWhole) {
+    REQUIRE_OCCT();
+    const double R = 4, k = 0.5, w = 1, sweep = 3 * kPi, T = 0.002;
+    const std::string path = temp_path("wound.brep");
+    test::write_helical_strip_brep(path, R, k, w, sweep);
+    const geom::Model model = io::read_model(path);
+    ASSERT_EQ(model.faces.size(), 1u);
+    const tess::TessellationResult result = mesh_at(model, T);
+    ASSERT_TRUE(result.failed_faces.empty()) << result.failed_faces[0].reason;
+    // dA = R du dv over a parallelogram of base `sweep` and height w: R sweep w.
+    EXPECT_NEAR(mesh_area(result.mesh), R * sweep * w, R * sweep * w * T / R);
+    std::filesystem::remove(path);
+}
+
 TEST(OcctModels, GappedAndMissingPcurvesAreHealedByShapeFix) {
     REQUIRE_OCCT();
     const double R = 10, h = 4, T = 0.005;
