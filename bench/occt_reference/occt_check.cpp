@@ -939,7 +939,13 @@ class Reference {
     const double d = project_on_surface(f, p, u, v, D_);
     bool near = false;
     const bool inside = contains(f, u, v, &near);
-    if (verbose) std::fprintf(stderr, "  newton uv %.9g %.9g d %.9g inside %d near %d boundary %.9g\n", u, v, d, int(inside), int(near), distance_to_boundary(f, p));
+    if (verbose) {
+      const BRepClass_FaceClassifier exact(f.face, gp_Pnt2d(u, v), Precision::PConfusion());
+      const TopAbs_State fclass = f.classifier->Perform(gp_Pnt2d(u, v));
+      std::fprintf(stderr, "  newton uv %.9g %.9g d %.9g inside %d (polygon %d, FClass2d %d, exact %d) near %d boundary %.9g\n",
+                   u, v, d, int(inside), f.uv_polygon.contains(u, v), int(fclass), int(exact.State()), int(near),
+                   distance_to_boundary(f, p));
+    }
     // The foot of the perpendicular if it is on the face, else (or also, when the foot is
     // near the edges) the nearest boundary point. The start point S(u, v) is not used: its
     // fine triangle may reach outside the face by the fine mesh's boundary chord.
