@@ -19,6 +19,7 @@
 #include "tess/share_edge_points.h"
 #include "tess/snap_boundary_vertices.h"
 #include "tess/tessellate_face.h"
+#include "tess/verify_face.h"
 
 namespace trimkit::tess {
 namespace {
@@ -77,10 +78,48 @@ struct CoedgeRef {
 struct FaceOutput {
     mesh::Mesh mesh;
     std::string error;
+    // The verification's figures when the mesh was made and checked (else absent).
+    std::optional<FaceVerification> verification;
     std::vector<std::string> warnings;
     FaceTimings timings;
     double trim_seconds = 0.0;
+    double verify_seconds = 0.0;
 };
+
+// Phase 1's shared edges, for the faces.
+struct SharedEdges {
+    const std::vector<CoedgeRef>& first;  // the coedge that approximated each edge
+    const std::vector<std::optional<TrimPolyline>>& polyline;  // its polyline
+    const std::vector<std::vector<Eigen::Vector3d>>& points;  // the edge's points, in edge direction
+};
+
+// How a face is meshed: the first attempt as asked; a rejected face once more with
+// the other 3D trim method and, where the loops were repaired, without dropping
+// slivers. The retry approximates the face's shared edges itself too (else a B-rep
+// face, all of whose coedges are shared, would be meshed from the same polygons
+// again): its points there are the other method's, within the trim tolerance of the
+// same curve, and the boundary snap closes what it can of the seam.
+struct FaceAttempt {
+    TrimMethod method = TrimMethod::kBezier3d;
+    bool own_shared_edges = false;
+    double sliver_share = kSliverWidthShare;
+    std::string name;  // for the report: "with yang trims"
+};
+
+FaceAttempt first_attempt(const TessellationOptions& options) {
+    return {options.trim_method, false, kSliverWidthShare, ""};
+}
+
+FaceAttempt second_attempt(const TessellationOptions& options) {
+    const bool bezier = options.trim_method == TrimMethod::kBezier3d;
+    return {bezier ? TrimMethod::kYang : TrimMethod::kBezier3d, true, 0.0,
+            bezier ? "with yang trims" : "with bezier3d trims"};
+}
+
+std::string without_face_prefix(const std::string& what, int f) {
+    const std::string prefix = "face " + std::to_string(f) + ": ";
+    return what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what;
+}
 
 // Flags face-boundary edges (open, or between different faces) and sharp ones
 // (triangle normals differing by more than `angle`).
@@ -186,6 +225,108 @@ void unify_edge_ends(const geom::Model& model, std::vector<std::vector<Eigen::Ve
     }
 }
 
+FailedFace failed_face(int f, const FaceOutput& out) {
+    FailedFace failed;
+    failed.face = f;
+    failed.reason = out.error;
+    if (!out.verification || out.verification->passed()) return failed;
+    const FaceVerification& v = *out.verification;
+    switch (v.defect) {
+        case FaceDefect::kArea: failed.defect = "area"; break;
+        case FaceDefect::kLoopGap: failed.defect = "trim_loop"; break;
+        case FaceDefect::kBoundaryGap: failed.defect = "boundary"; break;
+        case FaceDefect::kNoBoundary: failed.defect = "no_boundary"; break;
+        case FaceDefect::kNone: break;
+    }
+    failed.area_mesh = v.area_mesh;
+    failed.area_exact = v.area_exact;
+    failed.area_bound = v.area_bound;
+    failed.boundary_gap = std::max(v.loop_gap, v.boundary_gap);
+    failed.boundary_bound = v.boundary_bound;
+    return failed;
+}
+
+// Meshes face f one way (`attempt`), welds it and verifies the mesh. Any failure
+// (an exception, no triangles, a rejected mesh) is out.error, naming the face.
+FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions& options, const SharedEdges& edges,
+                     const FaceAttempt& attempt) {
+    const geom::Face& face = model.faces[f];
+    FaceOutput out;
+    const double trim_tol = trim_tolerance(options);
+    try {
+        const auto trim_start = Clock::now();
+        const double snap_uv = kSnapUvRelative * uv_diagonal(face.surface);
+        std::vector<TrimPolygon> polygons;
+        for (size_t l = 0; l < face.loops.size(); ++l) {
+            const geom::Loop& loop = face.loops[l];
+            std::vector<TrimPolyline> polylines;
+            for (size_t c = 0; c < loop.coedges.size(); ++c) {
+                const geom::Coedge& coedge = loop.coedges[c];
+                const int e = coedge.edge;
+                const bool has_edge = !attempt.own_shared_edges && e >= 0 &&
+                                      e < static_cast<int>(model.edges.size()) && edges.polyline[e].has_value();
+                const CoedgeRef first = has_edge ? edges.first[e] : CoedgeRef{};
+                if (has_edge && first.face == f && first.loop == static_cast<int>(l) &&
+                    first.coedge == static_cast<int>(c)) {
+                    polylines.push_back(*edges.polyline[e]);
+                } else if (has_edge) {
+                    SharedEdgePolyline mapped = share_edge_points(face.surface, coedge, edges.points[e]);
+                    if (mapped.max_gap > options.tolerance)
+                        out.warnings.push_back("face " + std::to_string(f) + ": edge " + std::to_string(e) +
+                                               " lies " + geom::format_value(mapped.max_gap) +
+                                               " from the surface (more than the tolerance)");
+                    polylines.push_back(std::move(mapped.polyline));
+                } else {
+                    polylines.push_back(approximate_trim_curve(face.surface, coedge.curve, trim_tol, attempt.method));
+                    polylines.back().edge = e;
+                    drop_duplicate_points(polylines.back(), kDuplicatePointShare * options.tolerance);
+                }
+            }
+            LoopRepairReport report;
+            const TrimPolygon joined = join_trim_loop(polylines, loop.outer, snap_uv, &report);
+            for (TrimPolygon& p : repair_trim_loop(joined, snap_uv, &report, face.reversed, &face.surface,
+                                                   attempt.sliver_share * options.tolerance))
+                polygons.push_back(std::move(p));
+            if (report.changed())
+                out.warnings.push_back("face " + std::to_string(f) + ": trim loop " + std::to_string(l) +
+                                       " repaired (" + std::to_string(report.crossings) + " crossings, " +
+                                       std::to_string(report.dropped) + " slivers dropped" +
+                                       (report.reoriented ? ", reoriented" : "") + ")");
+        }
+        out.trim_seconds = seconds_since(trim_start);
+        TessellationOptions face_options = options;
+        face_options.trim_method = attempt.method;
+        out.mesh = tessellate_face(face, polygons, face_options, f, &out.timings);
+        // Near-duplicates within the face (a grid crossing 1e-13 from a trim
+        // point) become one vertex, dropping the zero-area slivers between them;
+        // a seam's or a pole's vertices (same position, uvs far apart) stay
+        // split. Faces are never merged by index: each keeps its own uvs.
+        mesh::WeldOptions near;
+        near.tolerance = kDuplicatePointShare * options.tolerance;
+        near.keep_split_uvs = true;
+        near.split_uv_distance = kSplitUvShare * uv_diagonal(face.surface);
+        mesh::weld_vertices(out.mesh, near);
+        if (out.mesh.triangle_count() == 0) {
+            out.error = "face " + std::to_string(f) + ": no triangles (the trimmed region is empty or degenerate)";
+            return out;
+        }
+        const auto verify_start = Clock::now();
+        out.verification = verify_face(face, out.mesh, polygons, options.tolerance, f);
+        out.verify_seconds = seconds_since(verify_start);
+        if (!out.verification->passed()) out.error = out.verification->reason;
+    } catch (const geom::NumericalFailure& e) {
+        out.error = e.what();
+    } catch (const geom::InvalidInput& e) {
+        out.error = e.what();
+    } catch (const std::bad_alloc&) {
+        out.error = "face " + std::to_string(f) + ": out of memory";
+    } catch (const std::exception& e) {
+        out.error = "face " + std::to_string(f) + ": internal error: " + e.what();
+    }
+    if (!out.error.empty()) out.mesh = mesh::Mesh();
+    return out;
+}
+
 }  // namespace
 
 TessellationResult tessellate_model(const geom::Model& model, const TessellationOptions& options) {
@@ -239,87 +380,46 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
     unify_edge_ends(model, edge_points, edge_polyline, reversed_on_first, options.tolerance);
     const double edge_seconds = seconds_since(start);
 
-    // Phase 2: faces.
+    // Phase 2: faces, each verified (verify_face) and retried once another way if
+    // its mesh is rejected.
     start = Clock::now();
+    const SharedEdges edges{first, edge_polyline, edge_points};
     std::vector<FaceOutput> outputs(model.faces.size());
     parallel_for(static_cast<int>(model.faces.size()), threads, [&](int f) {
-        const geom::Face& face = model.faces[f];
         FaceOutput& out = outputs[f];
-        try {
-            const auto trim_start = Clock::now();
-            const double snap_uv = kSnapUvRelative * uv_diagonal(face.surface);
-            std::vector<TrimPolygon> polygons;
-            for (size_t l = 0; l < face.loops.size(); ++l) {
-                const geom::Loop& loop = face.loops[l];
-                std::vector<TrimPolyline> polylines;
-                for (size_t c = 0; c < loop.coedges.size(); ++c) {
-                    const geom::Coedge& coedge = loop.coedges[c];
-                    const int e = coedge.edge;
-                    const bool has_edge = e >= 0 && e < static_cast<int>(model.edges.size()) &&
-                                          edge_polyline[e].has_value();
-                    if (has_edge && first[e].face == f && first[e].loop == static_cast<int>(l) &&
-                        first[e].coedge == static_cast<int>(c)) {
-                        polylines.push_back(*edge_polyline[e]);
-                    } else if (has_edge) {
-                        SharedEdgePolyline mapped = share_edge_points(face.surface, coedge, edge_points[e]);
-                        if (mapped.max_gap > options.tolerance)
-                            out.warnings.push_back("face " + std::to_string(f) + ": edge " + std::to_string(e) +
-                                                   " lies " + geom::format_value(mapped.max_gap) +
-                                                   " from the surface (more than the tolerance)");
-                        polylines.push_back(std::move(mapped.polyline));
-                    } else {
-                        polylines.push_back(approximate_trim_curve(face.surface, coedge.curve, trim_tol,
-                                                                   options.trim_method));
-                        polylines.back().edge = e;
-                        drop_duplicate_points(polylines.back(), kDuplicatePointShare * options.tolerance);
-                    }
-                }
-                LoopRepairReport report;
-                const TrimPolygon joined = join_trim_loop(polylines, loop.outer, snap_uv, &report);
-                for (TrimPolygon& p : repair_trim_loop(joined, snap_uv, &report, face.reversed, &face.surface,
-                                                       kSliverWidthShare * options.tolerance))
-                    polygons.push_back(std::move(p));
-                if (report.changed())
-                    out.warnings.push_back("face " + std::to_string(f) + ": trim loop " + std::to_string(l) +
-                                           " repaired (" + std::to_string(report.crossings) + " crossings, " +
-                                           std::to_string(report.dropped) + " slivers dropped" +
-                                           (report.reoriented ? ", reoriented" : "") + ")");
-            }
-            out.trim_seconds = seconds_since(trim_start);
-            out.mesh = tessellate_face(face, polygons, options, f, &out.timings);
-            // Near-duplicates within the face (a grid crossing 1e-13 from a trim
-            // point) become one vertex, dropping the zero-area slivers between them;
-            // a seam's or a pole's vertices (same position, uvs far apart) stay
-            // split. Faces are never merged by index: each keeps its own uvs.
-            mesh::WeldOptions near;
-            near.tolerance = kDuplicatePointShare * options.tolerance;
-            near.keep_split_uvs = true;
-            near.split_uv_distance = kSplitUvShare * uv_diagonal(face.surface);
-            mesh::weld_vertices(out.mesh, near);
-            if (out.mesh.triangle_count() == 0)
-                out.error = "face " + std::to_string(f) + ": no triangles (the trimmed region is empty or degenerate)";
-        } catch (const geom::NumericalFailure& e) {
-            out.error = e.what();
-        } catch (const geom::InvalidInput& e) {
-            out.error = e.what();
-        } catch (const std::bad_alloc&) {
-            out.error = "face " + std::to_string(f) + ": out of memory";
-        } catch (const std::exception& e) {
-            out.error = "face " + std::to_string(f) + ": internal error: " + e.what();
+        out = mesh_face(model, f, options, edges, first_attempt(options));
+        if (out.error.empty()) return;
+        FaceOutput retry = mesh_face(model, f, options, edges, second_attempt(options));
+        const double trim_seconds = out.trim_seconds + retry.trim_seconds;
+        const double verify_seconds = out.verify_seconds + retry.verify_seconds;
+        FaceTimings timings = retry.timings;
+        timings.surface += out.timings.surface;
+        timings.trim += out.timings.trim;
+        timings.triangulate += out.timings.triangulate;
+        if (retry.error.empty()) {
+            retry.warnings.insert(retry.warnings.begin(), out.error + "; retried " + second_attempt(options).name +
+                                                              ", which passed");
+            out = std::move(retry);
+        } else {
+            out.error += "; retried " + second_attempt(options).name + ": " + without_face_prefix(retry.error, f);
         }
+        out.trim_seconds = trim_seconds;
+        out.verify_seconds = verify_seconds;
+        out.timings = timings;
     });
     const double face_wall = seconds_since(start);
 
     // Gather in face order.
-    double trim_sum = 0.0, surface_sum = 0.0, triangulate_sum = 0.0;
+    double trim_sum = 0.0, surface_sum = 0.0, triangulate_sum = 0.0, verify_sum = 0.0;
     for (size_t f = 0; f < outputs.size(); ++f) {
         FaceOutput& out = outputs[f];
         trim_sum += out.trim_seconds + out.timings.trim;
         surface_sum += out.timings.surface;
         triangulate_sum += out.timings.triangulate;
         result.warnings.insert(result.warnings.end(), out.warnings.begin(), out.warnings.end());
+        verify_sum += out.verify_seconds;
         if (!out.error.empty()) {
-            result.failed_faces.push_back({static_cast<int>(f), out.error});
+            result.failed_faces.push_back(failed_face(static_cast<int>(f), out));
             continue;
         }
         if (out.mesh.triangle_count() == 0) continue;
@@ -327,11 +427,12 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
         mesh::append(result.mesh, out.mesh);
         out.mesh = mesh::Mesh();
     }
-    const double sum = trim_sum + surface_sum + triangulate_sum;
+    const double sum = trim_sum + surface_sum + triangulate_sum + verify_sum;
     if (sum > 0.0) {
         result.seconds.trim = edge_seconds + face_wall * trim_sum / sum;
         result.seconds.surface = face_wall * surface_sum / sum;
         result.seconds.triangulate = face_wall * triangulate_sum / sum;
+        result.seconds.verify = face_wall * verify_sum / sum;
     } else {
         result.seconds.trim = edge_seconds + face_wall;
     }

@@ -2,11 +2,15 @@
 // independent of the thread count), shared edges approximated once so both faces
 // use identical boundary points, faces joined into one mesh with coincident
 // vertices welded, T-junctions between faces closed, and face-boundary / sharp
-// edges flagged. Faces that fail are reported, the rest still meshed.
+// edges flagged. Each face's mesh is verified against the exact trimmed face
+// (verify_face) before it is accepted; a rejected face is retried once another way,
+// and if it still fails it is reported with its figures and left out of the mesh.
+// Faces that fail are reported, the rest still meshed.
 // Lengths are in the model's units; the mesh is in model space (instances are
 // not applied).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,9 +20,21 @@
 
 namespace trimkit::tess {
 
+// A face left out of the mesh. When its mesh was made but rejected by verify_face
+// (after the retry), `defect` says which check failed and the figures are the first
+// attempt's (verify_face.h); otherwise (an exception, no triangles) `defect` is
+// "error" and the figures are NaN.
 struct FailedFace {
     int face = -1;       // Model::faces index
-    std::string reason;  // the exception's message
+    std::string reason;  // "face 12: mesh area 1.504x the exact trimmed area (...)"
+    std::string defect = "error";  // "area", "trim_loop", "boundary", "no_boundary" or "error"
+    double area_mesh = std::numeric_limits<double>::quiet_NaN();
+    double area_exact = std::numeric_limits<double>::quiet_NaN();
+    double area_bound = std::numeric_limits<double>::quiet_NaN();  // allowed |area_mesh - area_exact|
+    // Largest distance between the trim loops' 3D curves and the mesh boundary (both
+    // ways), and the distance allowed.
+    double boundary_gap = std::numeric_limits<double>::quiet_NaN();
+    double boundary_bound = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Seconds per stage. Per-face stages run in parallel: their shares of the parallel
@@ -28,6 +44,7 @@ struct TessellationTimings {
     double surface = 0.0;      // kd-tree subdivision
     double triangulate = 0.0;  // triangulation and evaluation
     double weld = 0.0;         // welding, T-junctions, edge flags, open edge count
+    double verify = 0.0;       // verify_face on each face's mesh (and on its retry)
 };
 
 struct TessellationResult {
@@ -42,7 +59,8 @@ struct TessellationResult {
 };
 
 // Meshes every face of `model`. Throws geom::InvalidInput for invalid options;
-// per-face NumericalFailure / InvalidInput go to failed_faces.
+// per-face NumericalFailure / InvalidInput and rejected meshes go to failed_faces
+// (their triangles are not in the mesh).
 TessellationResult tessellate_model(const geom::Model& model, const TessellationOptions& options);
 
 // Diagonal of the tight bounding box of the trimmed faces, from points on them
