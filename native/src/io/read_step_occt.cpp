@@ -30,6 +30,7 @@
 #include <XSControl_WorkSession.hxx>
 
 #include <array>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -180,14 +181,31 @@ std::string read_failures(STEPCAFControl_Reader& reader) {
     int count = 0;
     for (Interface_CheckIterator it = checks; it.More() && count < 3; it.Next()) {
         const Handle(Interface_Check)& check = it.Value();
-        for (int i = 1; i <= check->NbFails() && count < 3; ++i, ++count)
-            text += (text.empty() ? "" : "; ") + std::string(check->CFail(i)) +
-                    (it.Number() > 0 ? " (entity #" + std::to_string(it.Number()) + ")" : "");
+        for (int i = 1; i <= check->NbFails() && count < 3; ++i) {
+            const std::string fail = check->CFail(i);
+            if (fail.find("DATA NOT AVAILABLE") != std::string::npos) continue;  // no check was run
+            text += (text.empty() ? "" : "; ") + fail +
+                    (it.Number() > 0 ? " (entity " + std::to_string(it.Number()) + ")" : "");
+            ++count;
+        }
     }
     return text;
 }
 
+// Throws a ReadError unless the file opens and starts with the ISO 10303-21 header.
+void check_step_header(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw geom::ReadError(path, 0, "cannot open the file");
+    std::string head(256, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<size_t>(in.gcount()));
+    const size_t start = head.find_first_not_of(" \t\r\n");
+    if (start == std::string::npos || head.compare(start, 12, "ISO-10303-21") != 0)
+        throw geom::ReadError(path, 1, "not a STEP file (it does not start with 'ISO-10303-21;')");
+}
+
 geom::Model read_step_unguarded(const std::string& path) {
+    check_step_header(path);
     Handle(TDocStd_Document) doc;
     XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
     STEPCAFControl_Reader reader;
@@ -198,7 +216,11 @@ geom::Model read_step_unguarded(const std::string& path) {
         throw geom::ReadError(path, 0, "Open CASCADE cannot read this file as STEP" +
                                            (why.empty() ? std::string() : ": " + why));
     }
-    if (!reader.Transfer(doc)) throw geom::ReadError(path, 0, "Open CASCADE transfers no shape from the STEP file");
+    if (!reader.Transfer(doc)) {
+        const std::string why = read_failures(reader);
+        throw geom::ReadError(path, 0, "Open CASCADE transfers no shape from the STEP file" +
+                                           (why.empty() ? std::string() : ": " + why));
+    }
     StepStyles styles(doc);
 
     geom::Model model;

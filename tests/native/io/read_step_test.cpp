@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "geom/error.h"
+#include "geom/flatten_instances.h"
 #include "io/read_model.h"
 
 namespace trimkit::io {
@@ -69,6 +71,30 @@ TEST(ReadStep, MissingOrBrokenFileIsReadError) {
         std::fclose(f);
     }
     EXPECT_THROW(read_step(bad), geom::ReadError);
+    // The messages say what is wrong, not only that OCCT failed.
+    try {
+        read_step(bad);
+    } catch (const geom::ReadError& e) {
+        EXPECT_NE(e.reason().find("not a STEP file"), std::string::npos) << e.what();
+    }
+    try {
+        read_step("/nonexistent/part.stp");
+    } catch (const geom::ReadError& e) {
+        EXPECT_NE(e.reason().find("cannot open"), std::string::npos) << e.what();
+    }
+    // A STEP file with a dangling reference: OCCT's own check message is passed on.
+    {
+        std::FILE* f = std::fopen(bad.c_str(), "w");
+        ASSERT_NE(f, nullptr);
+        std::fputs("ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#2=FOO_BAR(#99);\nENDSEC;\nEND-ISO-10303-21;\n", f);
+        std::fclose(f);
+    }
+    try {
+        read_step(bad);
+        ADD_FAILURE() << "no ReadError";
+    } catch (const geom::ReadError& e) {
+        EXPECT_NE(e.reason().find("#99"), std::string::npos) << e.what();
+    }
     std::filesystem::remove(bad);
 }
 
@@ -96,7 +122,8 @@ TEST(ReadStep, FaceCountsMatchOpenCascade) {
         const std::string path = kStepDir + "/" + file;
         if (!std::filesystem::exists(path)) continue;
         const geom::Model m = read_step(path);
-        EXPECT_EQ(static_cast<int>(m.faces.size()), faces) << file;
+        // OCCT counts each placed face; trimkit reads a part once and places it.
+        EXPECT_EQ(static_cast<int>(geom::flatten_instances(m).faces.size()), faces) << file;
         EXPECT_TRUE(m.warnings.empty()) << file << ": " << m.warnings.front();
         EXPECT_EQ(m.units, "mm");
         EXPECT_DOUBLE_EQ(m.scale_to_metres, 1e-3);
@@ -141,42 +168,53 @@ TEST(ReadStep, FacesEvaluateFiniteAndLoopsClose) {
     }
 }
 
-// as1-oc-214-mat.stp (an AP214 assembly): bodies carry their parts' product names and
-// faces the style colours (XCAF). The file's tree: as1 = plate + 2 l-bracket-assembly
-// (l-bracket + 3 nut-bolt-assembly (bolt + nut)) + rod-assembly (rod + 2 nut): 18 solids.
-// Its styles colour the parts (one colour each, the rod its only COLOUR_RGB(1, 0.5, 0))
-// and leave the plate plain; equal colours are one Model::colors entry.
-TEST(ReadStep, AssemblyPartsAreNamedAndColoured) {
+// as1-oc-214-mat.stp (an AP214 assembly): each part is one body, read once, named after
+// its product, and placed by instances named after the occurrences (XCAF). The file's
+// tree: as1 = plate + 2 l-bracket-assembly (l-bracket + 3 nut-bolt-assembly (bolt +
+// nut)) + rod-assembly (rod + 2 nut): 5 parts, 18 placements. Its five STYLED_ITEMs
+// colour the five solids, one colour each: the rod COLOUR_RGB(1, 0.5, 0), the plate's
+// solid (#3813, in the representation of the plate's context #6195) COLOUR_RGB(0.8, 1, 0),
+// the others pre-defined red, green and blue. (Reading placed shapes, the earlier
+// reader missed the plate's colour.)
+TEST(ReadStep, AssemblyPartsAreNamedColouredAndPlaced) {
     REQUIRE_STEP_FILE(path, "as1-oc-214-mat.stp");
     const geom::Model m = read_step(path);
-    ASSERT_EQ(m.bodies.size(), 18u);
-    std::map<std::string, int> names;
+    ASSERT_EQ(m.bodies.size(), 5u);
+    ASSERT_EQ(m.instances.size(), 18u);
+    std::map<std::string, int> placements;
     std::map<std::string, std::set<int>> part_colors;
-    for (const geom::Body& b : m.bodies) {
-        ++names[b.name];
+    for (const geom::Instance& i : m.instances) ++placements[m.bodies[i.body].name];
+    for (const geom::Body& b : m.bodies)
         for (int f : b.faces) {
             ASSERT_LT(m.faces[f].color, static_cast<int>(m.colors.size()));
             part_colors[b.name].insert(m.faces[f].color);
         }
+    EXPECT_EQ(placements, (std::map<std::string, int>{{"bolt", 6}, {"l-bracket", 2}, {"nut", 8}, {"plate", 1},
+                                                      {"rod", 1}}));
+    // Every placement lies below the root assembly, the nuts of the bolts two levels down.
+    int deepest = 0;
+    for (const geom::Instance& i : m.instances) {
+        ASSERT_FALSE(i.path.empty());
+        EXPECT_EQ(i.path.front(), "as1");
+        deepest = std::max(deepest, static_cast<int>(i.path.size()));
     }
-    EXPECT_EQ(names, (std::map<std::string, int>{{"bolt", 6}, {"l-bracket", 2}, {"nut", 8}, {"plate_1", 1},
-                                                 {"rod", 1}}));
+    EXPECT_EQ(deepest, 3);
     std::set<int> distinct;
     for (const auto& [name, colors] : part_colors) {
         ASSERT_EQ(colors.size(), 1u) << name;  // one colour per part, on every face
-        if (name == "plate_1") {
-            EXPECT_EQ(*colors.begin(), -1);
-            continue;
-        }
         ASSERT_GE(*colors.begin(), 0) << name;
         distinct.insert(*colors.begin());
     }
-    EXPECT_EQ(distinct.size(), 4u);
-    EXPECT_EQ(m.colors.size(), 4u);
+    EXPECT_EQ(distinct.size(), 5u);
+    EXPECT_EQ(m.colors.size(), 5u);
     const auto& rod = m.colors[*part_colors["rod"].begin()].rgb;
     EXPECT_NEAR(rod[0], 1.0, 1e-6);
     EXPECT_NEAR(rod[1], 0.5, 1e-6);
     EXPECT_NEAR(rod[2], 0.0, 1e-6);
+    const auto& plate = m.colors[*part_colors["plate"].begin()].rgb;
+    EXPECT_NEAR(plate[0], 0.8, 1e-6);
+    EXPECT_NEAR(plate[1], 1.0, 1e-6);
+    EXPECT_NEAR(plate[2], 0.0, 1e-6);
 }
 
 TEST(ReadStep, ScrewSharesEdgesAndPlacesCurvesOnSurfaces) {
