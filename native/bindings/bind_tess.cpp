@@ -103,15 +103,25 @@ void bind_tess(py::module_& m) {
             [](tess::TessellationOptions& o, const std::string& s) { o.trim_method = method_from_name(s); })
         .def_readwrite("threads", &tess::TessellationOptions::threads);
 
-    py::class_<tess::FailedFace>(m, "FailedFace")
+    py::class_<tess::FailedFace>(m, "FailedFace",
+                                 "A face left out of the mesh; figures NaN unless its mesh was made and rejected.")
         .def_readonly("face", &tess::FailedFace::face)
-        .def_readonly("reason", &tess::FailedFace::reason);
+        .def_readonly("reason", &tess::FailedFace::reason)
+        .def_readonly("defect", &tess::FailedFace::defect,
+                      "'area', 'trim_loop', 'boundary', 'no_boundary' (the check that failed) or 'error'")
+        .def_readonly("area_mesh", &tess::FailedFace::area_mesh)
+        .def_readonly("area_exact", &tess::FailedFace::area_exact)
+        .def_readonly("area_bound", &tess::FailedFace::area_bound, "allowed |area_mesh - area_exact|")
+        .def_readonly("boundary_gap", &tess::FailedFace::boundary_gap,
+                      "largest distance between the trim loops' 3D curves and the mesh boundary")
+        .def_readonly("boundary_bound", &tess::FailedFace::boundary_bound);
 
     py::class_<tess::TessellationTimings>(m, "TessellationTimings")
         .def_readonly("trim", &tess::TessellationTimings::trim)
         .def_readonly("surface", &tess::TessellationTimings::surface)
         .def_readonly("triangulate", &tess::TessellationTimings::triangulate)
-        .def_readonly("weld", &tess::TessellationTimings::weld);
+        .def_readonly("weld", &tess::TessellationTimings::weld)
+        .def_readonly("verify", &tess::TessellationTimings::verify);
 
     py::class_<tess::TessellationResult>(m, "TessellationResult")
         .def_readonly("mesh", &tess::TessellationResult::mesh)

@@ -1,5 +1,8 @@
 // trimkit mesh MODEL -o OUT --tolerance T [--relative] [--angle A]
-//   [--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N] [--json]
+//   [--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N] [--json] [--strict]
+// Each face left out of the mesh (failed_faces) gets one stderr line,
+// "trimkit: MODEL: face N: reason"; the mesh of the other faces is still written.
+// --strict: exit status 3 when any face failed.
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -18,7 +21,10 @@ namespace {
 
 const char* const kMeshUsage =
     "trimkit mesh MODEL -o OUT --tolerance T [--relative] [--angle DEGREES] "
-    "[--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N] [--json]";
+    "[--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N] [--json] [--strict]";
+
+// Exit status of --strict when a face failed (0 success, 1 internal, 2 bad input).
+constexpr int kFailedFacesStatus = 3;
 
 using Clock = std::chrono::steady_clock;
 
@@ -29,7 +35,7 @@ double seconds_since(Clock::time_point start) {
 }  // namespace
 
 int run_mesh(const std::vector<std::string>& argv) {
-    const Arguments args(argv, {"--json", "--relative"},
+    const Arguments args(argv, {"--json", "--relative", "--strict"},
                          {"-o", "--output", "--tolerance", "--angle", "--mode", "--trim-method", "--threads"});
     args.expect_positionals(1, kMeshUsage);
     const std::string& path = args.positionals()[0];
@@ -83,9 +89,16 @@ int run_mesh(const std::vector<std::string>& argv) {
         std::ostringstream json;
         json << "{\"faces\": " << result.faces << ", \"faces_meshed\": " << result.faces_meshed
              << ", \"failed_faces\": [";
-        for (size_t k = 0; k < result.failed_faces.size(); ++k)
-            json << (k ? ", " : "") << "{\"face\": " << result.failed_faces[k].face
-                 << ", \"reason\": " << json_string(result.failed_faces[k].reason) << "}";
+        for (size_t k = 0; k < result.failed_faces.size(); ++k) {
+            const tess::FailedFace& failed = result.failed_faces[k];
+            json << (k ? ", " : "") << "{\"face\": " << failed.face << ", \"reason\": " << json_string(failed.reason)
+                 << ", \"defect\": " << json_string(failed.defect)
+                 << ", \"area_mesh\": " << json_number(failed.area_mesh)
+                 << ", \"area_exact\": " << json_number(failed.area_exact)
+                 << ", \"area_bound\": " << json_number(failed.area_bound)
+                 << ", \"boundary_gap\": " << json_number(failed.boundary_gap)
+                 << ", \"boundary_bound\": " << json_number(failed.boundary_bound) << "}";
+        }
         json << "], \"triangles\": " << result.mesh.triangle_count()
              << ", \"vertices\": " << result.mesh.vertex_count() << ", \"open_edges\": " << result.open_edges
              << ", \"tolerance\": " << json_number(result.tolerance) << ", \"warnings\": [";
@@ -95,7 +108,8 @@ int run_mesh(const std::vector<std::string>& argv) {
              << ", \"trim\": " << json_number(result.seconds.trim)
              << ", \"surface\": " << json_number(result.seconds.surface)
              << ", \"triangulate\": " << json_number(result.seconds.triangulate)
-             << ", \"weld\": " << json_number(result.seconds.weld) << ", \"write\": " << json_number(write_seconds)
+             << ", \"weld\": " << json_number(result.seconds.weld)
+             << ", \"verify\": " << json_number(result.seconds.verify) << ", \"write\": " << json_number(write_seconds)
              << ", \"total\": " << json_number(total) << "}}";
         std::cout << json.str() << "\n";
     } else {
@@ -103,9 +117,13 @@ int run_mesh(const std::vector<std::string>& argv) {
                   << " vertices, " << result.faces_meshed << "/" << result.faces << " faces meshed, "
                   << result.open_edges << " open edges, tolerance " << result.tolerance << ", "
                   << total << " s\n";
-        for (const auto& failed : result.failed_faces) std::cout << "  failed: " << failed.reason << "\n";
     }
-    return 0;
+    for (const tess::FailedFace& failed : result.failed_faces) {
+        const std::string prefix = "face " + std::to_string(failed.face) + ": ";
+        std::cerr << "trimkit: " << path << ": " << (failed.reason.rfind(prefix, 0) == 0 ? "" : prefix)
+                  << failed.reason << "\n";
+    }
+    return args.flag("--strict") && !result.failed_faces.empty() ? kFailedFacesStatus : 0;
 }
 
 }  // namespace trimkit::cli
