@@ -68,7 +68,11 @@ def measure(path, args, tmp):
             row["check_error"] = one_line((check or {}).get("error") or stderr or f"exit status {status}")
             check = None
         row["check"] = check
-        occt_args = ["--tolerance", repr(T)]
+        # occt_mesh works in OCCT's units: IGES files not in mm are scaled (occt_check's unit).
+        unit = check["unit"] if check else 1.0
+        occt_args = ["--tolerance", repr(T * unit)]
+        if unit != 1.0:
+            row["notes"].append(f"OCCT's model is in mm, the file's unit is {unit:g} mm")
     else:
         row["check"] = None
         occt_args = ["-r", str(args.tolerance)]
