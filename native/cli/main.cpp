@@ -17,7 +17,7 @@ namespace {
 const char* const kUsage =
     "usage: trimkit COMMAND [ARGS]\n"
     "commands:\n"
-    "  info MODEL [--json]    summary of an IGES or STEP model: units, faces, surfaces, loops, edges\n"
+    "  info MODEL [--json]    summary of an IGES, STEP or .brep model: units, faces, surfaces, loops, edges\n"
     "  mesh MODEL -o OUT --tolerance T [--relative] [--angle DEG] [--mode guaranteed|approximate]\n"
     "       [--trim-method bezier3d|yang|param] [--threads N] [--json] [--strict]\n"
     "                         tessellate to .obj .ply .stl .glb within T (model units);\n"
