@@ -52,13 +52,16 @@ constexpr double kCurvatureCap = 1.0;
 // error, below any width worth meshing (a strip this narrow has less area than
 // L·T of the area bound).
 constexpr double kAcrossShare = 0.25;
+// The coarse TrimRegion samples a span at least this often.
+constexpr int kMinCoarseSpanSamples = 4;
 // Rounding of the bounds: a share of T, and of the face's size (coordinates ~1e6 T).
 constexpr double kRoundingShare = 1e-6;
 constexpr double kRoundingRelative = 1e-12;
 
 // ---- Sampling the trim curves in 3D ----
-// Intervals per Bézier span of a coedge's curve to start with, and at least per coedge.
-constexpr int kSpanIntervals = 4, kMinCoedgeIntervals = 8;
+// Intervals per Bézier span of a coedge's curve to start with (two, so an S-shaped
+// span is halved where its middle lies on its chord), and at least per coedge.
+constexpr int kSpanIntervals = 2, kMinCoedgeIntervals = 8;
 // An interval is halved while S(c(t)) at its middle lies more than this share of T
 // from its chord, at most kMaxHalvings times (1024 pieces of a starting interval),
 // so the sampled polyline is within ~0.2 T of the curve: a boundary vertex on the
@@ -141,6 +144,21 @@ bool bounds_region(const TrimRegion& region, const geom::NurbsSurface& S, const 
     return region.contains(d[0] + step) != region.contains(d[0] - step);
 }
 
+// The coarse TrimRegion's points per span: options.coarse_trim's, fewer on faces
+// whose trims have many (short) spans, so a face gets about coarse_points in all.
+TrimRegionOptions coarse_trim(const geom::Face& face, const VerifyFaceOptions& options) {
+    int spans = 0;
+    for (const geom::Loop& loop : face.loops)
+        for (const geom::Coedge& coedge : loop.coedges) {
+            const auto [a, b] = coedge.curve.domain();
+            spans += static_cast<int>(breaks(coedge.curve.knots(), a, b).size()) - 1;
+        }
+    TrimRegionOptions trim = options.coarse_trim;
+    trim.samples_per_span = std::clamp(options.coarse_points / std::max(spans, 1), kMinCoarseSpanSamples,
+                                       std::max(kMinCoarseSpanSamples, options.coarse_trim.samples_per_span));
+    return trim;
+}
+
 // A polyline set as a mesh of degenerate triangles (a, b, b), so TriangleBvh
 // finds the closest point on its segments.
 void add_segment(mesh::Mesh& m, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
@@ -213,7 +231,7 @@ FaceVerification verify_face(const geom::Face& face, const mesh::Mesh& face_mesh
     out.boundary_bound = tolerance + out.edge_gap + rounding;
 
     // (a) Area, coarsely, then finely if the mesh is not well inside the bound.
-    out.area_exact = trimmed_area(S, TrimRegion(face, options.coarse_trim), options.coarse_cells,
+    out.area_exact = trimmed_area(S, TrimRegion(face, coarse_trim(face, options)), options.coarse_cells,
                                   options.coarse_levels);
     out.area_mesh = mesh::surface_area(face_mesh);
     const double deficit = kCurvatureSafety * chord_deficit(S, face_mesh);
