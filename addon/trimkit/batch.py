@@ -96,7 +96,7 @@ def convert(inputs, output, tolerance, relative=False, angle=30.0, mode="guarant
 def parse(argv):
     parser = argparse.ArgumentParser(prog="blender -b -P batch.py --",
                                      description="Convert CAD files to .blend, .glb or .obj with trimkit.")
-    parser.add_argument("--input", action="append", required=True, help="IGES file (repeatable)")
+    parser.add_argument("--input", action="append", required=True, help="IGES, STEP or .brep file (repeatable)")
     parser.add_argument("--output", required=True, help="OUT.blend, OUT.glb or OUT.obj")
     parser.add_argument("--tolerance", type=float, required=True,
                         help="in the files' units, or a fraction of the model's size with --relative")

@@ -7,6 +7,7 @@ import pathlib
 
 import bpy
 import mathutils
+import numpy as np
 
 from . import blender_mesh, io, stored_source, tbp_objects
 
@@ -51,13 +52,14 @@ def import_file(context, filepath, settings, progress=None):
                            split=settings.split, stem=path.stem)
     placements = io.placements(model, scale)
     text = stored_source.store(path.name, data)
-    collection = new_collection(context, path.stem) if placements else context.collection
+    collection = new_collection(context.collection, path.stem) if placements else context.collection
+    assemblies = {(): collection}
     objects = []
     for k, part in enumerate(result.parts):
         me = blender_mesh.create_mesh(part, smooth=settings.smooth, exact_normals=settings.exact_normals)
-        for name, matrix in object_placements(part, placements):
+        for name, matrix, tree in object_placements(part, placements):
             obj = bpy.data.objects.new(name, me)
-            collection.objects.link(obj)
+            assembly_collection(assemblies, tree).objects.link(obj)
             if matrix is not None:
                 obj.matrix_world = mathutils.Matrix(matrix.tolist())
             store_settings(obj.trimkit, text, path.name, part, scale, result, settings)
@@ -68,20 +70,29 @@ def import_file(context, filepath, settings, progress=None):
     return objects, result
 
 
-def new_collection(context, name):
+def new_collection(parent, name):
     collection = bpy.data.collections.new(name)
-    context.collection.children.link(collection)
+    parent.children.link(collection)
     return collection
 
 
+def assembly_collection(assemblies, tree):
+    """The collection of the assembly path `tree` (a tuple of names below the file's
+    collection, assemblies[()]), made with its parents when new."""
+    if tree not in assemblies:
+        parent = assembly_collection(assemblies, tree[:-1])
+        assemblies[tree] = new_collection(parent, tree[-1] or "assembly")
+    return assemblies[tree]
+
+
 def object_placements(part, placements):
-    """[(name, (4, 4) matrix or None)] of the objects showing `part`: one per instance
-    of its body, else one, untransformed."""
+    """[(name, (4, 4) matrix or None, assembly path)] of the objects showing `part`: one
+    per instance of its body, else one, untransformed."""
     if part.kind == "BODY":
         mine = [p for p in placements if p.body == part.index]
         if mine:
-            return [(p.name or part.name, p.matrix) for p in mine]
-    return [(part.name, None)]
+            return [(p.name or part.name, p.matrix, p.path) for p in mine]
+    return [(part.name, None, ())]
 
 
 def store_settings(props, text, file_name, part, scale, result, settings):
@@ -113,13 +124,17 @@ def select_only(context, objects):
 
 
 def record_stats(props, part, result):
-    faces = set(int(f) for f in set(part.face_ids.tolist()))
-    failed = [(f, reason) for f, reason in result.failed_faces if part.kind == "MODEL" or f in faces]
-    props.faces = len(faces) + len(failed)
+    """Counts and failures of the object showing `part`: the failed faces are those the
+    part holds (part.faces: its body's, its face, or the model's), which have no
+    triangles and so are not among part.face_ids."""
+    faces = set(part.faces) | set(int(f) for f in np.unique(part.face_ids))
+    failed = [(f, reason) for f, reason in result.failed_faces if f in faces]
+    props.faces = len(faces)
     props.triangles = len(part.triangles)
     props.seconds = result.seconds
     props.failed_faces = len(failed)
-    props.failed_report = "; ".join(f"face {f}: {reason}" for f, reason in failed)[:1000]
+    props.failed_report = "; ".join(reason if reason.startswith(f"face {f}:") else f"face {f}: {reason}"
+                                    for f, reason in failed)[:1000]
 
 
 def is_trimkit(obj):

@@ -48,6 +48,9 @@ class MeshPart:
     edge_flags: np.ndarray      # (k,) uint8: EDGE_FACE_BOUNDARY | EDGE_SHARP
     materials: list             # [(name, (r, g, b))]
     material_index: np.ndarray  # (m,) int32 into materials
+    # CAD face ids the part holds, with triangles or not (a face that failed to mesh
+    # has none, yet belongs to its body's object).
+    faces: list = dataclasses.field(default_factory=list)
 
 
 @dataclasses.dataclass
@@ -75,23 +78,27 @@ def read_source(path):
 
 
 STEP_SUFFIXES = (".stp", ".step")
+BREP_SUFFIXES = (".brep", ".brp")
+OCCT_SUFFIXES = STEP_SUFFIXES + BREP_SUFFIXES
 
 
 def read_bytes(data, name):
     """Model from a CAD file's bytes, the reader chosen by `name`'s extension: IGES is
-    parsed in memory, STEP through a temporary copy (Open CASCADE reads files)."""
-    if pathlib.Path(name).suffix.lower() in STEP_SUFFIXES:
+    parsed in memory, STEP and .brep through a temporary copy (Open CASCADE reads files)."""
+    if pathlib.Path(name).suffix.lower() in OCCT_SUFFIXES:
         return read_step_bytes(data, name)
     return native().read_model_bytes(data, name)
 
 
 def read_step_bytes(data, name):
     if not has_step():
-        raise RuntimeError(f"{name}: this trimkit module cannot read STEP (built without Open CASCADE)")
+        raise RuntimeError(f"{name}: this trimkit module cannot read STEP or .brep (built without Open CASCADE)")
     with tempfile.TemporaryDirectory(prefix="trimkit-") as folder:
         path = pathlib.Path(folder) / pathlib.Path(name).name
         path.write_bytes(data)
         try:
+            if path.suffix.lower() in BREP_SUFFIXES:
+                return native().read_brep(str(path))
             return native().read_step(str(path))
         except RuntimeError as err:  # name the file, not its temporary copy
             raise RuntimeError(str(err).replace(str(path), name)) from None
@@ -164,6 +171,7 @@ class Placement:
     body: int
     matrix: np.ndarray  # (4, 4) float64, the body's coordinates to the scene's (Blender units)
     name: str
+    path: tuple = ()    # assembly names from the root down to the instance's (STEP)
 
 
 def placements(model, scale=1.0):
@@ -173,7 +181,8 @@ def placements(model, scale=1.0):
     for instance in model.instances:
         matrix = np.array(instance.matrix, np.float64)
         matrix[:3, 3] *= scale
-        out.append(Placement(body=instance.body, matrix=matrix, name=instance.name))
+        out.append(Placement(body=instance.body, matrix=matrix, name=instance.name,
+                             path=tuple(getattr(instance, "path", ()))))
     return out
 
 
@@ -250,7 +259,8 @@ def make_part(model, arrays, colors, kind, index, stem):
         face_ids=part_face_ids, corner_uvs=arrays["corner_uvs"][corner_keep],
         corner_normals=arrays["corner_normals"][corner_keep],
         edges=remap[edges[edge_keep]].reshape(-1, 2), edge_flags=arrays["edge_flags"][edge_keep],
-        materials=materials, material_index=material_index)
+        materials=materials, material_index=material_index,
+        faces=list(range(len(model.faces))) if faces is None else list(faces))
 
 
 def normalize_uvs(uvs, face_ids):

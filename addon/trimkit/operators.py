@@ -90,11 +90,11 @@ class IMPORT_SCENE_OT_trimkit_iges(bpy.types.Operator, ImportCadBase):
 
 
 class IMPORT_SCENE_OT_trimkit_step(bpy.types.Operator, ImportCadBase):
-    """Import a STEP file as meshes within a tolerance of the exact surfaces"""
+    """Import a STEP or Open CASCADE .brep file as meshes within a tolerance of the exact surfaces"""
     bl_idname = "import_scene.trimkit_step"
     bl_label = "Import STEP (trimkit)"
     filename_ext = ".stp"
-    filter_glob: StringProperty(default="*.stp;*.step", options={'HIDDEN'})
+    filter_glob: StringProperty(default="*.stp;*.step;*.brep;*.brp", options={'HIDDEN'})
 
 
 def run_with_progress(operator, context, work):
@@ -261,7 +261,7 @@ class OBJECT_OT_trimkit_trim(bpy.types.Operator):
 def menu_import(self, context):
     self.layout.operator(IMPORT_SCENE_OT_trimkit_iges.bl_idname, text="IGES (.igs, .iges) [trimkit]")
     if io.has_step():
-        self.layout.operator(IMPORT_SCENE_OT_trimkit_step.bl_idname, text="STEP (.stp, .step) [trimkit]")
+        self.layout.operator(IMPORT_SCENE_OT_trimkit_step.bl_idname, text="STEP (.stp, .step, .brep) [trimkit]")
     self.layout.operator(IMPORT_SCENE_OT_trimkit_tbp.bl_idname, text="TBP (.tbp) [trimkit]")
 
 

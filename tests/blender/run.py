@@ -200,6 +200,55 @@ def test_bearing_imports_with_every_face_covered():
           f"import {seconds:.2f} s; x4 tolerance: {coarser} triangles")
 
 
+class RecordingLayout:
+    """Stands in for a panel's layout: records the labels drawn."""
+    def __init__(self, labels=None):
+        self.labels = [] if labels is None else labels
+        self.use_property_split = False
+
+    def label(self, text="", icon='NONE'):
+        self.labels.append(text)
+
+    def column(self, **_):
+        return RecordingLayout(self.labels)
+
+    row = box = column
+
+    def prop(self, *_, **__):
+        pass
+
+    operator = prop
+
+
+def panel_labels(obj):
+    import types
+    layout = RecordingLayout()
+    bpy.types.OBJECT_PT_trimkit.draw(types.SimpleNamespace(layout=layout), types.SimpleNamespace(object=obj))
+    return layout.labels
+
+
+def test_failed_face_is_recorded_on_every_object_of_its_body():
+    # A subfigure (one body) placed twice, holding a face trimkit cannot mesh
+    # correctly (its "hole" lies outside its outer loop; tests/python/iges_samples.py)
+    # and one it can. The failed face has no triangles, so no object's cad_face names
+    # it; both objects of the body must still record it, and the panel show it.
+    sys.path.insert(0, str(ROOT / "tests" / "python"))
+    from iges_samples import write_stray_hole_plate
+    path = write_stray_hole_plate(TMP / "stray_subfigure.igs", instances=((0, 0, 0), (200, 0, 0)))
+    empty_scene()
+    objects = import_iges(path, relative=False, tolerance=0.05, use_file_units=False, scale=1.0)
+    assert len(objects) == 2 and objects[0].data == objects[1].data, objects
+    for _ in range(2):  # as imported, then re-meshed
+        for o in objects:
+            assert face_ids(o) == {1}, face_ids(o)
+            assert (o.trimkit.faces, o.trimkit.failed_faces) == (2, 1), (o.name, o.trimkit.failed_report)
+            assert o.trimkit.failed_report.startswith("face 0: mesh area 0."), \
+                o.trimkit.failed_report
+            labels = panel_labels(o)
+            assert "1 failed faces" in labels and o.trimkit.failed_report[:120] in labels, labels
+        retessellate_with_tolerance(objects, 0.5)
+
+
 def test_saved_blend_remeshes_after_moving_it_and_the_source():
     empty_scene()
     source = TMP / "moved_source" / "bracket.igs"
@@ -438,6 +487,53 @@ def test_iges_subfigure_instances_share_meshes():
     # bug33327's faces are planar with straight trims: meshed exactly at any tolerance.
     assert finer == first, (first, finer)
     print(f"    bug33327: {len(objects)} objects sharing {len(groups)} meshes, {first} -> {finer} triangles")
+
+
+# Part areas (mm^2) of as1-oc-214-mat.stp by face count, from Open CASCADE alone
+# (STEPControl_Reader, BRepGProp::SurfaceProperties per solid, OCCT 7.6.3).
+AS1_OCCT_PART_AREAS = {8: ("nut", 747.154807), 4: ("rod", 6440.270508), 7: ("bolt", 1562.984787),
+                       16: ("l-bracket", 24628.265381), 18: ("plate", 70027.349442)}
+
+
+def collection_tree(collection, depth=0):
+    """[(depth, name)] of `collection` and the collections below it."""
+    out = [(depth, collection.name)]
+    for child in sorted(collection.children, key=lambda c: c.name):
+        out += collection_tree(child, depth + 1)
+    return out
+
+
+def world_area(obj):
+    """Area of the object's mesh in world space (Blender units squared)."""
+    me, m = obj.data, obj.matrix_world
+    return sum(((m @ me.vertices[p.vertices[1]].co - m @ me.vertices[p.vertices[0]].co)
+                .cross(m @ me.vertices[p.vertices[2]].co - m @ me.vertices[p.vertices[0]].co)).length / 2
+               for p in me.polygons)
+
+
+def test_step_assembly_imports_as_a_collection_tree_of_linked_duplicates():
+    path = step_sample("as1-oc-214-mat.stp")
+    empty_scene()
+    before = set(bpy.data.objects)
+    assert bpy.ops.import_scene.trimkit_step(filepath=str(path)) == {'FINISHED'}
+    objects = [o for o in bpy.data.objects if o not in before]
+    groups = instance_groups(objects)
+    assert len(objects) == 18 and len(groups) == 5, (len(objects), len(groups))
+    root = bpy.data.collections[path.stem]
+    tree = [name for _, name in collection_tree(root)]
+    assert "as1" in tree and "rod-assembly_1" in tree and "l-bracket-assembly_2" in tree, tree
+    nested = [c for c in bpy.data.collections if c.name.startswith("nut-bolt-assembly")]
+    assert len(nested) == 6 and all(len(c.objects) == 2 for c in nested), [(c.name, len(c.objects)) for c in nested]
+    worst = 0.0
+    for o in objects:
+        name, occt = AS1_OCCT_PART_AREAS[o.trimkit.faces]
+        area = world_area(o) / 1e-6  # m^2 -> mm^2 (the file's millimetres)
+        worst = max(worst, abs(area / occt - 1))
+        assert abs(area / occt - 1) <= 0.002, (o.name, name, area, occt)
+        assert o.trimkit.failed_faces == 0, (o.name, o.trimkit.failed_report)
+    origins = {tuple(round(x, 6) for x in o.matrix_world.translation) for o in objects}
+    assert len(origins) > 5, origins  # parts placed by their own transforms
+    print(f"    as1: 18 objects sharing 5 meshes in {len(tree)} collections, area within {worst:.2e} of OCCT's")
 
 
 # -- TBP solids ---------------------------------------------------------------
