@@ -21,13 +21,17 @@
 //                    box, BRepBndLib::AddOptimal as in occt_mesh); default -r 0.001
 // How a distance to a trimmed face is found (mesh -> surface): a box tree over the fine
 // triangulation gives the candidate faces (every face whose fine triangles come within
-// the nearest one's distance plus twice the fine mesh's measured deviation); on each, a
-// Newton projection onto the exact surface starts from the (u,v) of the nearest fine
-// point; if BRepTopAdaptor_FClass2d puts the foot outside the face, the distance to the
-// face's boundary (its edge curves, refined by Newton) is taken instead. Every candidate
-// distance is to a point of the face, so each is an upper bound; the largest samples are
-// then refined within their triangle and re-measured with BRepExtrema_DistShapeShape.
-// The largest surface samples are likewise refined in (u,v) or along their edge.
+// the nearest one's distance plus twice the fine mesh's margin: its measured deviation,
+// the fine deflection, a grid cell); on each, a Newton projection onto the exact surface
+// (held inside the face's UV box) starts from the (u,v) of the nearest fine point. The
+// foot counts if it is on the trimmed face (even-odd test against the face's (u,v)
+// polygon of its pcurves; BRepClass_FaceClassifier where two rays disagree); if it is off
+// the face, or within T of its edges, the distance to the face's edge curves (refined by
+// Newton) is taken too. Every value is a distance to a point of the face, an upper bound;
+// the 32 largest samples are refined within their triangle and re-measured with
+// BRepExtrema_DistShapeShape, keeping the smaller. The 32 largest surface samples are
+// likewise refined in (u,v) or along their edge. Faces BRepMesh cannot triangulate (no
+// triangles, or an area more than 1% off) are sampled on a (u,v) grid instead.
 // Usage: occt_check MODEL MESH [-r R | --tolerance T] [--samples N] [--fine F] [--brute-force]
 //   --brute-force also measures every mesh sample with BRepExtrema_DistShapeShape against
 //   the compound of all faces and reports how the fast distances compare (a self-test).
@@ -624,7 +628,6 @@ class Reference {
     return best;
   }
 
-  double margin() const { return margin_; }
   // All faces as one compound (the brute-force reference).
   TopoDS_Compound compound() const {
     TopoDS_Compound c;
