@@ -490,9 +490,10 @@ def test_iges_subfigure_instances_share_meshes():
 
 
 # Part areas (mm^2) of as1-oc-214-mat.stp by face count, from Open CASCADE alone
-# (STEPControl_Reader, BRepGProp::SurfaceProperties per solid, OCCT 7.6.3).
-AS1_OCCT_PART_AREAS = {8: ("nut", 747.154807), 4: ("rod", 6440.270508), 7: ("bolt", 1562.984787),
-                       16: ("l-bracket", 24628.265381), 18: ("plate", 70027.349442)}
+# (STEPControl_Reader, BRepGProp::SurfaceProperties per solid at relative precision 1e-9,
+# OCCT 7.6.3).
+AS1_OCCT_PART_AREAS = {8: ("nut", 747.168106), 4: ("rod", 6440.264980), 7: ("bolt", 1562.942318),
+                       16: ("l-bracket", 24628.318368), 18: ("plate", 70027.433145)}
 
 
 def collection_tree(collection, depth=0):
