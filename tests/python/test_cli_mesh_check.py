@@ -2,15 +2,14 @@
 end to end through the command line, in every output format; and a face the mesher
 cannot mesh correctly (a file written here) reported on stderr, in the JSON with its
 figures, and as exit status 3 with --strict."""
-import importlib.util
 import json
-import math
 import pathlib
 import subprocess
 
 import pytest
 
 from conftest import ROOT
+from iges_samples import STRAY_HOLE_AREA, write_stray_hole_plate
 
 
 def trimkit_program():
@@ -65,44 +64,6 @@ def test_relative_tolerance_is_reported_absolute(tmp_path, bracket):
     assert mesh["tolerance"] == pytest.approx(0.001 * (120 ** 2 + 80 ** 2 + 40 ** 2) ** 0.5, rel=1e-3)
 
 
-def iges_writer():
-    spec = importlib.util.spec_from_file_location("make_samples", ROOT / "samples" / "make_samples.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def write_stray_hole_plate(path):
-    """A plate S = (u, v, 0) over [0, 100] x [0, 60] trimmed (144) to the disc of radius
-    20 at (30, 30), with a "hole" of radius 10 at (75, 30) outside that disc: the face's
-    own loops bound the disc plus the stray one (500 pi by the even-odd rule), which no
-    mesh inside the outer loop covers. Then the bracket's quarter cylinder, which meshes."""
-    m = iges_writer()
-    w = m.IgesWriter()
-    plate = [1, 1, 1, 1, 0, 0, 1, 0, 0, 0, 0, 100, 100, 0, 0, 60, 60, 1.0, 1.0, 1.0, 1.0,
-             0.0, 0.0, 0.0, 100.0, 0.0, 0.0, 0.0, 60.0, 0.0, 100.0, 60.0, 0.0,
-             0.0, 100.0, 0.0, 60.0]
-    surf = w.add(128, plate, status="00010000")
-    loops = []
-    for cx, radius, clockwise in ((30.0, 20.0, False), (75.0, 10.0, True)):
-        pts, wts, knots = m.circle_nurbs(cx, 30.0, radius)
-        if clockwise:
-            pts, wts = pts[::-1], wts[::-1]
-        pcurve = w.add(126, m.curve126(pts, wts, knots, 2), status="00010500")
-        mcurve = w.add(126, m.curve126(pts, wts, knots, 2), status="00010000")
-        loops.append(w.add(142, [1, surf, pcurve, mcurve, 1], status="00010000"))
-    w.add(144, [surf, 1, 1, loops[0], loops[1]])
-    s = math.sqrt(0.5)
-    cyl = [2, 1, 2, 1, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 0, 0, 40, 40, 1.0, s, 1.0, 1.0, s, 1.0]
-    for z in (0.0, 40.0):
-        for x, y in ((120.0, 60.0), (120.0, 80.0), (100.0, 80.0)):
-            cyl += [x, y, z]
-    cyl += [0.0, 1.0, 0.0, 40.0]
-    w.add(128, cyl)
-    path.write_text(w.text(path.name))
-    return str(path)
-
-
 def run_mesh(*args):
     return subprocess.run([TRIMKIT, "mesh", *args], capture_output=True, text=True, timeout=300)
 
@@ -116,7 +77,7 @@ def test_failed_face_is_reported_with_its_figures(tmp_path):
     assert mesh["faces"] == 2 and mesh["faces_meshed"] == 1
     [failed] = mesh["failed_faces"]
     assert failed["face"] == 0 and failed["defect"] in ("area", "trim_loop", "boundary")
-    assert failed["area_exact"] == pytest.approx(500.0 * math.pi, rel=1e-3)
+    assert failed["area_exact"] == pytest.approx(STRAY_HOLE_AREA, rel=1e-3)
     assert abs(failed["area_mesh"] - failed["area_exact"]) > failed["area_bound"] or \
         failed["boundary_gap"] > failed["boundary_bound"]
     assert "retried with yang trims" in failed["reason"]
