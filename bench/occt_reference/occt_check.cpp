@@ -112,6 +112,9 @@ constexpr int kEdgeSubdivisions = 4;
 // A face's fine triangulation is used only when its area is within this share of the
 // face's exact area (BRepGProp); otherwise the face is sampled on a (u,v) grid.
 constexpr double kFineAreaMismatch = 0.01;
+// The (u,v) grid (per side) of the midpoint rule that decides between BRepGProp and
+// BRepMesh where their areas of a face differ by more than kFineAreaMismatch.
+constexpr int kAreaGrid = 500;
 // Grid fallback: about this many grid cells per face.
 constexpr double kGridCells = 40000;
 // How many of the largest samples of each direction are refined (and, mesh -> surface,
@@ -469,6 +472,8 @@ class Reference {
     return n;
   }
   int empty_faces() const { return empty_faces_; }
+  int area_replaced() const { return area_replaced_; }
+  int area_uncertain() const { return area_uncertain_; }
   std::size_t fine_triangles() const { return fine_.triangles.size(); }
   double max_deviation() const {
     double m = 0;
@@ -822,9 +827,27 @@ class Reference {
       bool usable = !tri.IsNull() && tri->NbTriangles() > 0 && (tri->HasUVNodes() || !f.surface);
       if (usable) add_triangulation(f, static_cast<int>(fi), tri, loc);
       f.fine_area = f.brepmesh_area = area_of(begin);
-      if (usable && f.surface && f.area > kTinyArea * D_ * D_ &&
-          std::abs(f.fine_area / f.area - 1) > kFineAreaMismatch)
-        usable = false;
+      const bool checkable = f.surface && f.area > kTinyArea * D_ * D_;
+      // Three opinions on the face's area where BRepGProp and BRepMesh's (u,v) domain
+      // disagree: the third is a midpoint rule over a (u,v) grid classified by the
+      // face's polygon. BRepMesh loses when the grid sides with BRepGProp (ec_turbine-A's
+      // face 1: 2.4x the area); BRepGProp loses when the grid sides with BRepMesh
+      // (PRO20358-X28.igs: BRepGProp 8045, BRepMesh and grid 8831, trimkit 8832).
+      if (usable && checkable) {
+        const double quadrature = uv_quadrature(f, begin);
+        if (std::abs(quadrature / f.area - 1) > kFineAreaMismatch) {
+          const double grid = grid_quadrature(f);
+          if (std::abs(grid / f.area - 1) <= kFineAreaMismatch) {
+            usable = false;
+          } else if (std::abs(grid / quadrature - 1) <= kFineAreaMismatch) {
+            f.area = quadrature;
+            ++area_replaced_;
+          } else {
+            usable = false;
+            ++area_uncertain_;
+          }
+        }
+      }
       if (!usable) {
         truncate(begin);
         if (f.surface) {
@@ -835,9 +858,49 @@ class Reference {
         }
         f.fine_area = area_of(begin);
       }
+      if (tri.IsNull() && checkable) {  // no BRepMesh opinion: the grid checks BRepGProp
+        const double grid = grid_quadrature(f);
+        if (std::abs(grid / f.area - 1) > kFineAreaMismatch) ++area_uncertain_;
+      }
       face_triangles_[fi] = {begin, static_cast<int>(fine_.triangles.size())};
     }
     fine_bvh_ = std::make_unique<TriangleBvh>(fine_.points, fine_.triangles);
+  }
+
+  // Area of the surface over the (u,v) triangles from `begin` on: |Su x Sv| integrated
+  // with the 3-point rule exact for quadratics (Strang & Fix; points (2/3, 1/6, 1/6)).
+  double uv_quadrature(const FaceData& f, int begin) const {
+    double a = 0;
+    for (std::size_t t = begin; t < fine_.triangles.size(); ++t) {
+      const auto& tri = fine_.triangles[t];
+      const auto &p = fine_.uv[tri[0]], &q = fine_.uv[tri[1]], &r = fine_.uv[tri[2]];
+      const double uv_area = 0.5 * std::abs((q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1]));
+      for (int k = 0; k < 3; ++k) {
+        const double w0 = k == 0 ? 2.0 / 3 : 1.0 / 6, w1 = k == 1 ? 2.0 / 3 : 1.0 / 6, w2 = 1 - w0 - w1;
+        gp_Pnt P;
+        gp_Vec Su, Sv;
+        f.surface->D1(w0 * p[0] + w1 * q[0] + w2 * r[0], w0 * p[1] + w1 * q[1] + w2 * r[1], P, Su, Sv);
+        a += uv_area / 3 * Su.Crossed(Sv).Magnitude();
+      }
+    }
+    return a;
+  }
+
+  // Area of the trimmed face by the midpoint rule on a kAreaGrid x kAreaGrid grid over
+  // its UV box, cells counted whose centre the face's polygon contains.
+  double grid_quadrature(const FaceData& f) const {
+    const double du = (f.u1 - f.u0) / kAreaGrid, dv = (f.v1 - f.v0) / kAreaGrid;
+    double a = 0;
+    for (int j = 0; j < kAreaGrid; ++j)
+      for (int i = 0; i < kAreaGrid; ++i) {
+        const double u = f.u0 + (i + 0.5) * du, v = f.v0 + (j + 0.5) * dv;
+        if (!contains(f, u, v)) continue;
+        gp_Pnt P;
+        gp_Vec Su, Sv;
+        f.surface->D1(u, v, P, Su, Sv);
+        a += Su.Crossed(Sv).Magnitude() * du * dv;
+      }
+    return a;
   }
 
   double area_of(int begin) const {
@@ -996,6 +1059,7 @@ class Reference {
   std::unique_ptr<TriangleBvh> fine_bvh_;
   double margin_ = 0;
   int empty_faces_ = 0;
+  int area_replaced_ = 0, area_uncertain_ = 0;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -1300,7 +1364,9 @@ int run(const Options& opt) {
           ", \"fine_max_deviation\": " + num(ref.max_deviation() * L) +
           ", \"grid_faces\": " + std::to_string(ref.grid_faces()) +
           ", \"mesh_only_faces\": " + std::to_string(ref.mesh_only_faces()) +
-          ", \"unsampled_faces\": " + std::to_string(ref.empty_faces()) + "}";
+          ", \"unsampled_faces\": " + std::to_string(ref.empty_faces()) +
+          ", \"area_from_quadrature\": " + std::to_string(ref.area_replaced()) +
+          ", \"area_uncertain\": " + std::to_string(ref.area_uncertain()) + "}";
   if (opt.brute_force)
     json += ", \"brute_force\": {\"max_T\": " + num(brute_max / T) + ", \"fast_over_T\": " + num(brute_over / T) +
             ", \"fast_under_T\": " + num(brute_under / T) + ", \"under_point\": " + json_point(L * brute_under_point) +
