@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <unordered_map>
 #include <utility>
 
 #include <Eigen/Geometry>
 
+#include "tess/grid_cell.h"
 #include "tess/triangulate_polygon.h"
 
 namespace trimkit::tess {
@@ -60,6 +63,123 @@ double width_on_surface(const std::vector<PolylinePoint>& P, const geom::NurbsSu
         area += 0.5 * std::abs(cross(uv[t[1]] - uv[t[0]], uv[t[2]] - uv[t[0]])) * d.Su.cross(d.Sv).norm();
     }
     return length > 0.0 ? 2.0 * area / length : 0.0;
+}
+
+// A piece's extent on the surface, for pieces whose mean width is below min_width.
+struct PieceExtent {
+    double width = 0.0;  // 2 x the largest distance found from a sample inside to the boundary
+    double area = 0.0;   // on the surface (sub-triangle centroid rule)
+    bool wide = false;   // a sample lies farther than `reach` from the boundary
+};
+
+// Bounds on piece_extent's work: halvings of a boundary segment while its chord
+// sags (2^12 parts), subdivisions per side of a triangle for samples (a triangle
+// 16 reaches across still has samples reach / 2 apart, wider ones coarser), and
+// segment parts filed in the grid (its cells grow past `reach` to keep within it).
+constexpr int kMaxBoundaryDepth = 12;
+constexpr int kMaxSampleDivisions = 16;
+constexpr double kMaxGridParts = 2e5;
+
+double segment_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    const Eigen::Vector3d d = b - a;
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0.0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (a + t * d - x).norm();
+}
+
+// S along the uv segment a -> b as points after S(a) (S(b) last), halved while the
+// chord's midpoint lies more than `sag` from the surface's.
+void surface_chords(const geom::NurbsSurface& S, const Eigen::Vector2d& a, const Eigen::Vector3d& A,
+                    const Eigen::Vector2d& b, const Eigen::Vector3d& B, double sag, int depth,
+                    std::vector<Eigen::Vector3d>* out) {
+    const Eigen::Vector2d m = 0.5 * (a + b);
+    const Eigen::Vector3d M = S.evaluate(m.x(), m.y());
+    if (depth < kMaxBoundaryDepth && (M - 0.5 * (A + B)).norm() > sag) {
+        surface_chords(S, a, A, m, M, sag, depth + 1, out);
+        surface_chords(S, m, M, b, B, sag, depth + 1, out);
+        return;
+    }
+    out->push_back(B);
+}
+
+// Width and area of a piece on the surface. The boundary is S along the piece's
+// (u,v) polygon (chords within reach / 10); samples are the centroids of each
+// (u,v) triangle's N x N subdivision, N such that they lie about reach / 2 apart
+// (a point deeper than reach has one within reach / 2; thin triangles get one).
+// Distances to the boundary are looked up in a grid of cells at least `reach`
+// wide (at most kMaxGridParts segment parts filed), so a sample with no boundary
+// within reach is found without scanning: the piece is then wide.
+PieceExtent piece_extent(const std::vector<PolylinePoint>& P, const geom::NurbsSurface& S, double reach) {
+    PieceExtent e;
+    const size_t n = P.size();
+    std::vector<Eigen::Vector2d> uv(n);
+    std::vector<Eigen::Vector3d> X(n);
+    std::vector<int> ring(n);
+    for (size_t i = 0; i < n; ++i) {
+        uv[i] = P[i].uv;
+        X[i] = S.evaluate(uv[i].x(), uv[i].y());
+        ring[i] = static_cast<int>(i);
+    }
+    std::vector<Eigen::Vector3d> boundary{X[0]};
+    for (size_t i = 0; i < n; ++i)
+        surface_chords(S, uv[i], X[i], uv[(i + 1) % n], X[(i + 1) % n], 0.1 * reach, 0, &boundary);
+    // Segments split into parts no longer than a cell, each part filed under the
+    // cells its box touches: a boundary point within `reach` of x lies in one of
+    // the 27 cells around x's.
+    double length = 0.0;
+    for (size_t k = 0; k + 1 < boundary.size(); ++k) length += (boundary[k + 1] - boundary[k]).norm();
+    const double cell = std::max(reach, length / kMaxGridParts);
+    std::unordered_map<GridCell, std::vector<int>, GridCellHash> grid;
+    for (size_t k = 0; k + 1 < boundary.size(); ++k) {
+        const Eigen::Vector3d a = boundary[k], b = boundary[k + 1];
+        const int parts = std::max(1, static_cast<int>(std::ceil((b - a).norm() / cell)));
+        for (int q = 0; q < parts; ++q) {
+            const Eigen::Vector3d p0 = a + (b - a) * q / parts, p1 = a + (b - a) * (q + 1) / parts;
+            const GridCell lo = GridCell::of(p0.cwiseMin(p1), cell), hi = GridCell::of(p0.cwiseMax(p1), cell);
+            for (long long x = lo.x; x <= hi.x; ++x)
+                for (long long y = lo.y; y <= hi.y; ++y)
+                    for (long long z = lo.z; z <= hi.z; ++z) {
+                        std::vector<int>& cell = grid[{x, y, z}];
+                        if (cell.empty() || cell.back() != static_cast<int>(k)) cell.push_back(static_cast<int>(k));
+                    }
+        }
+    }
+    auto depth = [&](const Eigen::Vector3d& x) {
+        const GridCell c = GridCell::of(x, cell);
+        double best = std::numeric_limits<double>::infinity();
+        for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dy = -1; dy <= 1; ++dy)
+                for (long long dz = -1; dz <= 1; ++dz) {
+                    auto it = grid.find({c.x + dx, c.y + dy, c.z + dz});
+                    if (it == grid.end()) continue;
+                    for (int k : it->second) best = std::min(best, segment_distance(x, boundary[k], boundary[k + 1]));
+                }
+        return best;
+    };
+    for (const auto& t : triangulate_polygon(uv, ring)) {
+        const Eigen::Vector2d o = uv[t[0]];
+        const double area3 = 0.5 * (X[t[1]] - X[t[0]]).cross(X[t[2]] - X[t[0]]).norm();
+        const int N = std::clamp(static_cast<int>(std::ceil(2.0 * std::sqrt(area3) / reach)), 1, kMaxSampleDivisions);
+        const Eigen::Vector2d e1 = (uv[t[1]] - o) / N, e2 = (uv[t[2]] - o) / N;
+        const double sub_area = 0.5 * std::abs(cross(e1, e2));
+        for (int a = 0; a < N; ++a)
+            for (int b = 0; a + b < N; ++b)
+                for (int up = 0; up < 2 && (up == 0 || a + b + 1 < N); ++up) {
+                    const double f = up ? 2.0 / 3.0 : 1.0 / 3.0;
+                    const Eigen::Vector2d c = o + (a + f) * e1 + (b + f) * e2;
+                    const geom::SurfaceDerivatives d = S.derivatives(c.x(), c.y());
+                    e.area += sub_area * d.Su.cross(d.Sv).norm();
+                    if (e.wide) continue;
+                    const double h = depth(d.S);
+                    if (h > reach) {
+                        e.wide = true;
+                        e.width = 2.0 * reach;
+                    } else {
+                        e.width = std::max(e.width, 2.0 * h);
+                    }
+                }
+    }
+    return e;
 }
 
 // A point to insert into segment `segment` at fraction s.
@@ -246,18 +366,35 @@ std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_u
     Q = merge_close(Q, snap_uv);
 
     std::vector<TrimPolygon> out;
+    const double reach = kWideRegionFactor * min_width;
+    auto record_drop = [&](const PieceExtent* extent) {
+        rep.dropped += 1;
+        if (!extent) return;
+        rep.dropped_width = std::max(rep.dropped_width, extent->width);
+        rep.dropped_area += extent->area;
+    };
     for (std::vector<PolylinePoint>& piece : split_at_repeats(Q, snap_uv)) {
         piece = merge_close(piece, snap_uv);
         const double a = piece.size() >= 3 ? signed_area(piece) : 0.0;
         if (piece.size() < 3 || std::abs(a) <= 0.5 * snap_uv * perimeter(piece)) {
-            rep.dropped += 1;
+            if (piece.size() >= 3 && surface && reach > 0.0) {
+                const PieceExtent extent = piece_extent(piece, *surface, reach);
+                record_drop(&extent);
+            } else {
+                record_drop(nullptr);
+            }
             continue;
         }
         if ((loop.outer && a < 0.0) || (!loop.outer && a > 0.0))
             std::reverse(piece.begin(), piece.end());
         if (!cuts.empty() && surface && min_width > 0.0 && width_on_surface(piece, *surface) <= min_width) {
-            rep.dropped += 1;
-            continue;
+            // Thin on average; a sliver only if thin everywhere.
+            const PieceExtent extent = piece_extent(piece, *surface, reach);
+            if (!extent.wide) {
+                record_drop(&extent);
+                continue;
+            }
+            rep.kept_wide += 1;
         }
         out.push_back({std::move(piece), loop.outer});
     }

@@ -13,13 +13,32 @@
 
 namespace trimkit::tess {
 
+// A piece of a self-crossing loop whose mean width on the surface (twice its area
+// over its perimeter) is below min_width is dropped only if no point of it lies
+// farther than this many min_widths from its boundary: a long zero-width lobe
+// (a cut running back along a coil's seam, 300 T long on bug22869_Spring.igs)
+// attached to a wide region has a small mean width however wide the region is.
+// 5: a region whose interior reaches 0.05 T (min_width = 0.01 T) past its boundary
+// is no sliver; the boundary is measured on the surface (S at the piece's (u,v),
+// refined until its chords sag less than min_width / 2), so the trim chords'
+// own sag (up to 0.25 T) does not count as width.
+constexpr double kWideRegionFactor = 5.0;
+
 // What the repair changed, for the face's warnings.
 struct LoopRepairReport {
     bool reoriented = false;  // the loop ran against face.h's convention for its role
     int crossings = 0;        // self-intersections (crossing or touching points) found
     int split_loops = 0;      // extra simple loops the crossings created
-    int dropped = 0;          // slivers (area below snap width x perimeter) dropped
+    int dropped = 0;          // slivers (area below snap width x perimeter, or narrower than min_width) dropped
     double max_gap = 0.0;     // largest (u,v) gap between consecutive coedges
+    // With a surface: the widest dropped piece (twice the largest distance from a
+    // point inside it to its boundary, model units; at most 2 kWideRegionFactor
+    // min_width by construction) and the dropped pieces' total area on the surface.
+    double dropped_width = 0.0;
+    double dropped_area = 0.0;
+    // Pieces narrower than min_width on average but with a part wider than
+    // 2 kWideRegionFactor min_width: kept (they are regions of the face).
+    int kept_wide = 0;
     bool changed() const { return reoriented || crossings > 0 || dropped > 0; }
 };
 
@@ -47,6 +66,9 @@ TrimPolygon join_trim_loop(const std::vector<TrimPolyline>& coedges, bool outer,
 // min_width on the surface (twice their area over their perimeter) are dropped too: a trim curve running
 // back along the face's own boundary (a cut tangent to a seam) leaves zero-width
 // lobes whose sides belong to two different neighbours, which then meet directly.
+// Such a piece is kept when a point inside it lies farther than kWideRegionFactor
+// min_width from its boundary (report->kept_wide); the width and area of what is
+// dropped go to report->dropped_width and dropped_area.
 std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_uv,
                                           LoopRepairReport* report = nullptr,
                                           bool face_reversed = false,
