@@ -31,7 +31,7 @@ enum class FaceDefect {
 struct FaceVerification {
     FaceDefect defect = FaceDefect::kNone;
     bool passed() const { return defect == FaceDefect::kNone; }
-    // "face 12: mesh area 1.504x the exact trimmed area (812.3 vs 540.1, allowed ± 3.2)";
+    // "face 12: mesh area 1.504x the exact trimmed area (812.3 vs 540.1, allowed +/- 3.2)";
     // empty when passed.
     std::string reason;
 
