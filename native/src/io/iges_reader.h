@@ -43,6 +43,10 @@ struct IgesSurface {
     bool swap = false;
     double su = 1, ou = 0, sv = 1, ov = 0;
     std::optional<geom::ArcParameterMap> angle;
+    // kAngleV on a closed sweep (the NURBS closed in v): angles outside the
+    // sweep map periodically (θ ± 2π k onto v ± period k), so a trim curve across
+    // the seam keeps its shape past the domain (io/iges_closed_surfaces.h).
+    bool periodic_angle = false;
 };
 
 // The weights of a 126/128 entity as NurbsCurve/NurbsSurface take them: empty
@@ -93,6 +97,10 @@ public:
     static bool is_surface_type(int type);
     // `hint` sizes unbounded surfaces; without it they cannot be built.
     IgesSurface surface(int de, const BoundaryHint* hint = nullptr);
+    // Distance (model units) below which a surface's boundary rows count as one
+    // (closed direction): 1e-7 of its size, or the file's resolution (Global field
+    // 19) when larger, capped at 1e-4 of its size.
+    double closure_tolerance(const geom::NurbsSurface& s) const;
     // A 2D curve in the surface's native parameters mapped into NURBS (u, v);
     // nullopt when the surface has no usable map.
     std::optional<geom::NurbsCurve2d> map_to_nurbs(const IgesSurface& s,

@@ -9,6 +9,7 @@
 
 #include "geom/analytic_surfaces.h"
 #include "geom/bspline_basis.h"
+#include "geom/extend_closed_surface.h"
 #include "geom/error.h"
 #include "io/iges_reader.h"
 
@@ -23,6 +24,12 @@ constexpr double kPi = 3.14159265358979323846;
 // Unbounded surfaces are built this much (relative) larger than their trims'
 // extent, so trims near the edge stay strictly inside the domain.
 constexpr double kHintMargin = 0.02;
+// closure_tolerance: boundary rows within 1e-7 of the surface's size are one row
+// (above file rounding, below real gaps, as SurfaceProjector's seam test); a
+// file's resolution counts up to 1e-4 of the size (an absurd resolution does not
+// close a surface with a visible gap).
+constexpr double kClosedRelative = 1e-7;
+constexpr double kClosedResolutionCap = 1e-4;
 
 NurbsSurface bspline_128(IgesParameterCursor& c) {
     const int K1 = c.integer("upper index K1"), K2 = c.integer("upper index K2");
@@ -417,7 +424,14 @@ IgesSurface IgesReader::surface(int de, const BoundaryHint* hint) {
         fail(de, err.what());
     }
     if (e.transform != 0) out.nurbs = out.nurbs.transformed(own);
+    if (out.map == IgesSurface::Map::kAngleV)
+        out.periodic_angle = geom::is_closed_surface(out.nurbs, 1, closure_tolerance(out.nurbs));
     return out;
+}
+
+double IgesReader::closure_tolerance(const geom::NurbsSurface& s) const {
+    const double size = s.control_box().diagonal().norm();
+    return std::max(kClosedRelative * size, std::min(file_.global().min_resolution, kClosedResolutionCap * size));
 }
 
 std::optional<geom::NurbsCurve2d> IgesReader::map_to_nurbs(const IgesSurface& s,
@@ -436,9 +450,19 @@ std::optional<geom::NurbsCurve2d> IgesReader::map_to_nurbs(const IgesSurface& s,
     }
     // kAngleV: v = map(θ) is not affine. Axis-parallel polylines map exactly
     // point by point; other curves are sampled densely into a polyline.
+    // On a closed sweep an angle λ = σ(θ - θ0) past [0, 2π) maps through
+    // θ - σ 2π k, k = floor(λ / 2π), onto v + k T (T the NURBS period, |θ1 - θ0|):
+    // continuous across the seam (exactly when the sweep is 2π).
+    const double sweep = std::fabs(s.angle->theta1() - s.angle->theta0());
+    const double sigma = s.angle->direction();
     auto mapped = [&](Vector2d p) {
         p = affine(p);
-        p.y() = s.angle->to_nurbs(p.y());
+        double k = 0;
+        if (s.periodic_angle) {
+            k = std::floor(sigma * (p.y() - s.angle->theta0()) / (2 * kPi));
+            p.y() -= sigma * 2 * kPi * k;
+        }
+        p.y() = s.angle->to_nurbs(p.y()) + k * sweep;
         return p;
     };
     bool axis_parallel = c.degree() == 1;

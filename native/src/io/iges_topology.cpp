@@ -4,7 +4,10 @@
 // 504 edge list / 502 vertex list with shared edges. Trim curves end up in the
 // NURBS surface's (u,v) domain: parameter-space curves mapped from the entity's
 // native parameters when the file has them and they agree with the model-space
-// curve, else the model-space curve projected onto the surface.
+// curve, else the model-space curve projected onto the surface (refined until
+// the surface along it follows the curve, geom/project_curve_adaptive.h). On
+// surfaces closed in u or v, loops may run across the seam: they are unwrapped
+// and the surface extended over them (io/iges_closed_surfaces.h).
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -12,7 +15,9 @@
 
 #include "geom/error.h"
 #include "io/iges_reader.h"
+#include "geom/project_curve_adaptive.h"
 #include "geom/surface_projector.h"
+#include "io/iges_closed_surfaces.h"
 #include "io/trim_loop_repair.h"
 
 namespace trimkit::io {
@@ -34,6 +39,21 @@ constexpr double kReportedGap = 1e-4;
 // a seam (the boundary of a closed direction) runs along the seam, and may be on
 // either side of it; the projector puts it on one side by its own start.
 constexpr double kOnSeam = 1e-6;
+// Curves given (or preferred) in model space are projected so that the surface
+// along the (u,v) polyline stays within this fraction of the face's size (its
+// boundary box) of the curve's foot points: 1e-5, 0.01 of the acceptance
+// tolerance (1e-3 of the model's diagonal) on a face as large as the model.
+constexpr double kProjectionShare = 1e-5;
+// A winding loop closed along an iso-curve shorter than this share of its own
+// length (but not a pole, of length 0) rounds a small end of the surface
+// (PRO19800.igs: 0.216 against 50, a cone whose apex is a circle of radius 0.035
+// from the file's rounding). Followed exactly, the trim runs beside that end
+// circle closer than the tolerance, and tessellate_model's weld of loose faces
+// (snap_boundary_vertices, close_t_junctions within T) then splits the face's
+// boundary against itself without end (1133 -> 666 000 triangles, area x1.28).
+// Until the weld leaves a face's own boundary alone, such faces keep
+// project_curve's samples (the old boundary) with a warning.
+constexpr double kNearPoleShare = 0.02;
 
 // One piece of a boundary as the file gives it: model-space curves (in the
 // face's local space, in traversal order) and/or parameter-space curves (native
@@ -105,13 +125,16 @@ struct LoopBuilder {
     geom::SurfaceProjector projector;
     geom::Face& face;
     int loop_number;
+    double projection_tolerance;  // <= 0: project_curve's samples as they are (near_pole_fallback)
+    SurfacePeriods periods;       // closed directions of S (iges_closed_surfaces.h)
     bool projected_reported = false;
 
     // Indices into the loop's coedges of projected curves lying along a seam.
     std::vector<std::size_t> on_seam;
 
-    LoopBuilder(IgesReader& r, const IgesSurface& s, geom::Face& f, int n)
-        : reader(r), S(s), projector(s.nurbs), face(f), loop_number(n) {}
+    LoopBuilder(IgesReader& r, const IgesSurface& s, geom::Face& f, int n, double projection_tol)
+        : reader(r), S(s), projector(s.nurbs), face(f), loop_number(n), projection_tolerance(projection_tol),
+          periods(closed_periods(s.nurbs, r.closure_tolerance(s.nurbs))) {}
 
     // +1 / -1 when all of c's control points lie on the high / low end of the
     // closed direction `dir` (0: u, 1: v), 0 otherwise.
@@ -160,10 +183,11 @@ struct LoopBuilder {
         }
     }
 
+    // The surface at uv, periodic in closed directions (a parameter curve may run
+    // past the seam), clamped in the others.
     Vector3d at(const Vector2d& uv) const {
-        const auto [u0, u1] = S.nurbs.domain_u();
-        const auto [v0, v1] = S.nurbs.domain_v();
-        return S.nurbs.evaluate(std::clamp(uv.x(), u0, u1), std::clamp(uv.y(), v0, v1));
+        const Vector2d w = wrap_into_domain(S.nurbs, periods, uv);
+        return S.nurbs.evaluate(w.x(), w.y());
     }
 
     void add(const Segment& seg, geom::Loop& loop) {
@@ -217,7 +241,9 @@ struct LoopBuilder {
             if (seg.model.empty()) return;  // nothing usable: the loop closer bridges it
             pcs.clear();
             for (const NurbsCurve3d& k : seg.model) {
-                pcs.push_back(geom::project_curve(projector, k));
+                pcs.push_back(projection_tolerance > 0.0
+                                  ? geom::project_curve_adaptive(projector, k, projection_tolerance, periods.u, periods.v)
+                                  : geom::project_curve(projector, k));
                 if ((projector.closed_u() && seam_side(pcs.back(), 0) != 0) ||
                     (projector.closed_v() && seam_side(pcs.back(), 1) != 0))
                     on_seam.push_back(loop.coedges.size() + pcs.size() - 1);
@@ -245,6 +271,75 @@ struct LoopBuilder {
 void add_points(BoundaryHint* hint, const std::vector<NurbsCurve3d>& curves) {
     for (const auto& c : curves)
         for (const auto& p : c.points()) hint->push_back(p);
+}
+
+// The tolerance projected trim curves follow (kProjectionShare of the face's
+// boundary box, or of the surface when the face has no model-space curve).
+double projection_tolerance(const BoundaryHint& hint, const geom::NurbsSurface& surface) {
+    Eigen::AlignedBox3d box;
+    for (const Vector3d& p : hint) box.extend(p);
+    const double size = box.isEmpty() ? 0.0 : box.diagonal().norm();
+    return kProjectionShare * (size > 0.0 ? size : surface_size(surface));
+}
+
+// Length on the surface of a loop's coedges (sampled).
+double loop_length(const geom::Loop& loop, const geom::NurbsSurface& S) {
+    constexpr int kSamples = 32;
+    double length = 0.0;
+    for (const geom::Coedge& e : loop.coedges) {
+        const auto [a, b] = e.curve.domain();
+        Vector3d prev;
+        for (int k = 0; k <= kSamples; ++k) {
+            const Vector2d uv = e.curve.evaluate(a + (b - a) * k / kSamples);
+            const Vector3d x = S.evaluate(uv.x(), uv.y());
+            if (k > 0) length += (x - prev).norm();
+            prev = x;
+        }
+    }
+    return length;
+}
+
+// Loops of a face on a surface closed in u or v: coedges shifted by whole periods
+// to continue each other, and the surface extended over loops that run past its
+// domain (not with a natural outer boundary, which is the domain itself).
+// Returns the length of the shortest iso-curve a winding loop was closed along
+// that is a near-pole (nonzero, below kNearPoleShare of the loop's length), or -1.
+double cover_closed_surface(const IgesReader& r, geom::Face& face, bool natural_outer) {
+    const double tol = r.closure_tolerance(face.surface);
+    const SurfacePeriods periods = closed_periods(face.surface, tol);
+    if (!periods.any()) return -1.0;
+    double near_pole = -1.0;
+    for (std::size_t i = 0; i < face.loops.size(); ++i) {
+        geom::Loop& loop = face.loops[i];
+        unwrap_loop(loop, periods);
+        if (natural_outer && i == 0) continue;
+        const double iso = settle_winding(loop, face.surface, periods);
+        if (iso < 0.0) continue;
+        face.warnings.push_back("loop " + std::to_string(i + 1 - (natural_outer ? 1 : 0)) +
+                                " winds around the closed surface; closed along its iso-curve of length " +
+                                geom::format_value(iso));
+        if (iso > 0.0 && iso < kNearPoleShare * loop_length(loop, face.surface) && (near_pole < 0.0 || iso < near_pole))
+            near_pole = iso;
+    }
+    if (natural_outer) return near_pole;
+    const auto [u0, u1] = face.surface.domain_u();
+    const auto [v0, v1] = face.surface.domain_v();
+    if (!cover_loops(face.surface, face.loops, periods, tol)) return near_pole;
+    const auto [a0, a1] = face.surface.domain_u();
+    const auto [b0, b1] = face.surface.domain_v();
+    face.warnings.push_back("trim loops run across the surface's seam: domain [" + geom::format_value(u0) + ", " +
+                            geom::format_value(u1) + "] x [" + geom::format_value(v0) + ", " +
+                            geom::format_value(v1) + "] extended to [" + geom::format_value(a0) + ", " +
+                            geom::format_value(a1) + "] x [" + geom::format_value(b0) + ", " +
+                            geom::format_value(b1) + "] (the surface repeats with its period)");
+    return near_pole;
+}
+
+// The warning of a face whose loops are rebuilt with the coarse projection.
+std::string near_pole_warning(double iso) {
+    return "a model-space trim rounds a small end of the closed surface (an iso-curve " + geom::format_value(iso) +
+           " long), so following it makes that end a boundary running beside the trim; projected at the coarse "
+           "sample spacing instead (issue 9: the mesh weld cannot take boundaries closer than the tolerance)";
 }
 
 }  // namespace
@@ -378,16 +473,26 @@ std::vector<int> IgesReader::read_face_entity(int de, const Eigen::Affine3d& pla
             loops.push_back(std::move(segs));
         }
         IgesSurface S = surface(surface_de, hint.empty() ? nullptr : &hint);
-        face.surface = S.nurbs;
         face.surface_kind = S.kind;
-        if (natural_outer) face.loops.push_back(geom::natural_boundary_loop(S.nurbs));
-        for (std::size_t i = 0; i < loops.size(); ++i) {
-            geom::Loop loop;
-            loop.outer = first_is_outer && i == 0;
-            LoopBuilder lb(*this, S, face, static_cast<int>(i + 1));
-            for (const Segment& s : loops[i]) lb.add(s, loop);
-            lb.settle_seam_sides(loop);
-            face.loops.push_back(std::move(loop));
+        const std::size_t warnings_before = face.warnings.size();
+        auto build_loops = [&](double projection_tol) {
+            face.surface = S.nurbs;
+            face.loops.clear();
+            face.warnings.resize(warnings_before);
+            if (natural_outer) face.loops.push_back(geom::natural_boundary_loop(S.nurbs));
+            for (std::size_t i = 0; i < loops.size(); ++i) {
+                geom::Loop loop;
+                loop.outer = first_is_outer && i == 0;
+                LoopBuilder lb(*this, S, face, static_cast<int>(i + 1), projection_tol);
+                for (const Segment& s : loops[i]) lb.add(s, loop);
+                lb.settle_seam_sides(loop);
+                face.loops.push_back(std::move(loop));
+            }
+            return cover_closed_surface(*this, face, natural_outer);
+        };
+        if (const double iso = build_loops(projection_tolerance(hint, S.nurbs)); iso >= 0.0) {
+            build_loops(0.0);
+            face.warnings.push_back(near_pole_warning(iso));
         }
         // The outer loop encloses the others, so it has the largest area; some
         // writers list a hole first (UKI60998.igs: a 143 whose first boundary is
@@ -483,17 +588,27 @@ int IgesReader::read_brep_face(int de, const Eigen::Affine3d& placement, bool re
         loops.push_back(std::move(segs));
     }
     IgesSurface S = surface(surface_de, hint.empty() ? nullptr : &hint);
-    face.surface = S.nurbs;
     face.surface_kind = S.kind;
+    const std::size_t warnings_before = face.warnings.size();
+    auto build_loops = [&](double projection_tol) {
+        face.surface = S.nurbs;
+        face.loops.clear();
+        face.warnings.resize(warnings_before);
+        for (std::size_t i = 0; i < loops.size(); ++i) {
+            geom::Loop loop;
+            LoopBuilder lb(*this, S, face, static_cast<int>(i + 1), projection_tol);
+            for (const Segment& s : loops[i]) lb.add(s, loop);
+            lb.settle_seam_sides(loop);
+            face.loops.push_back(std::move(loop));
+        }
+        return cover_closed_surface(*this, face, false);
+    };
+    if (const double iso = build_loops(projection_tolerance(hint, S.nurbs)); iso >= 0.0) {
+        build_loops(0.0);
+        face.warnings.push_back(near_pole_warning(iso));
+    }
     // Without the outer flag, the loop with the largest extent is the outer one.
     int outer_index = 0;
-    for (std::size_t i = 0; i < loops.size(); ++i) {
-        geom::Loop loop;
-        LoopBuilder lb(*this, S, face, static_cast<int>(i + 1));
-        for (const Segment& s : loops[i]) lb.add(s, loop);
-        lb.settle_seam_sides(loop);
-        face.loops.push_back(std::move(loop));
-    }
     if (outer_flag == 0) {
         double best = -1;
         for (std::size_t i = 0; i < face.loops.size(); ++i) {

@@ -1,0 +1,144 @@
+#include "io/iges_closed_surfaces.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "geom/extend_closed_surface.h"
+
+namespace trimkit::io {
+namespace {
+
+// Samples per Bézier span of a coedge (and at least this many per coedge) for
+// the loops' range: a quadratic span's extreme between samples is ~1/256 of its
+// bulge off, far inside kCoverPadding of a period for trims near a seam.
+constexpr int kRangeSamples = 16;
+// settle_winding: samples of an iso-curve over one period (its length to ~0.1%
+// for a circle), and how much shorter another joint's iso-curve must be to take
+// the gap from the closing joint (ties keep the loop as the file has it).
+constexpr int kIsoSamples = 64;
+constexpr double kShorterIso = 0.5;
+
+std::pair<double, double> domain(const geom::NurbsSurface& s, int d) {
+    return d == 0 ? s.domain_u() : s.domain_v();
+}
+
+void extend_by_samples(const geom::NurbsCurve2d& c, Eigen::AlignedBox2d* box) {
+    const auto [a, b] = c.domain();
+    int spans = 0;
+    const std::vector<double>& U = c.knots();
+    for (std::size_t i = 1; i < U.size(); ++i)
+        if (U[i] > U[i - 1] && U[i] > a && U[i - 1] < b) ++spans;
+    const int n = kRangeSamples * std::max(1, spans);
+    for (int k = 0; k <= n; ++k) box->extend(c.evaluate(a + (b - a) * k / n));
+}
+
+}  // namespace
+
+SurfacePeriods closed_periods(const geom::NurbsSurface& s, double tolerance) {
+    SurfacePeriods p;
+    if (geom::is_closed_surface(s, 0, tolerance)) p.u = s.domain_u().second - s.domain_u().first;
+    if (geom::is_closed_surface(s, 1, tolerance)) p.v = s.domain_v().second - s.domain_v().first;
+    return p;
+}
+
+Eigen::Vector2d wrap_into_domain(const geom::NurbsSurface& s, const SurfacePeriods& periods,
+                                 Eigen::Vector2d uv) {
+    for (int d = 0; d < 2; ++d) {
+        const auto [a, b] = domain(s, d);
+        if (periods[d] > 0.0 && (uv[d] < a || uv[d] > b)) {
+            double r = std::fmod(uv[d] - a, periods[d]);
+            if (r < 0.0) r += periods[d];
+            uv[d] = a + r;
+        }
+        uv[d] = std::clamp(uv[d], a, b);
+    }
+    return uv;
+}
+
+bool unwrap_loop(geom::Loop& loop, const SurfacePeriods& periods) {
+    if (!periods.any()) return false;
+    bool moved = false;
+    for (std::size_t k = 1; k < loop.coedges.size(); ++k) {
+        const geom::NurbsCurve2d& prev = loop.coedges[k - 1].curve;
+        geom::NurbsCurve2d& cur = loop.coedges[k].curve;
+        const Eigen::Vector2d gap = prev.evaluate(prev.domain().second) - cur.evaluate(cur.domain().first);
+        Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+        for (int d = 0; d < 2; ++d)
+            if (periods[d] > 0.0) shift[d] = periods[d] * std::round(gap[d] / periods[d]);
+        if (shift.isZero()) continue;
+        cur = cur.transformed(Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
+        moved = true;
+    }
+    return moved;
+}
+
+double settle_winding(geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods) {
+    const std::size_t n = loop.coedges.size();
+    if (n < 2) return -1.0;
+    double moved = -1.0;
+    for (int d = 0; d < 2; ++d) {
+        const double L = periods[d];
+        if (!(L > 0.0)) continue;
+        const geom::NurbsCurve2d& last = loop.coedges.back().curve;
+        const geom::NurbsCurve2d& first = loop.coedges.front().curve;
+        const double w = std::round((last.evaluate(last.domain().second)[d] - first.evaluate(first.domain().first)[d]) / L);
+        if (w == 0.0) continue;
+        // Joint j lies between coedge j and j + 1 (j = n - 1: the loop's closing joint).
+        auto iso_length = [&](std::size_t j) {
+            const geom::NurbsCurve2d& c = loop.coedges[j].curve;
+            const Eigen::Vector2d at = wrap_into_domain(surface, periods, c.evaluate(c.domain().second));
+            const auto [a, b] = domain(surface, d);
+            double length = 0.0;
+            Eigen::Vector3d prev;
+            for (int k = 0; k <= kIsoSamples; ++k) {
+                Eigen::Vector2d uv = at;
+                uv[d] = a + (b - a) * k / kIsoSamples;
+                const Eigen::Vector3d x = surface.evaluate(uv.x(), uv.y());
+                if (k > 0) length += (x - prev).norm();
+                prev = x;
+            }
+            return length;
+        };
+        std::size_t best = n - 1;
+        double best_length = iso_length(n - 1);
+        for (std::size_t j = 0; j + 1 < n; ++j) {
+            const double length = iso_length(j);
+            if (length < kShorterIso * best_length) best = j, best_length = length;
+        }
+        if (best == n - 1) continue;
+        Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+        shift[d] = -w * L;
+        for (std::size_t k = best + 1; k < n; ++k)
+            loop.coedges[k].curve = loop.coedges[k].curve.transformed(
+                Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
+        moved = best_length;
+    }
+    return moved;
+}
+
+bool cover_loops(geom::NurbsSurface& surface, const std::vector<geom::Loop>& loops,
+                 const SurfacePeriods& periods, double tolerance) {
+    if (!periods.any()) return false;
+    Eigen::AlignedBox2d box;
+    for (const geom::Loop& loop : loops)
+        for (const geom::Coedge& e : loop.coedges) extend_by_samples(e.curve, &box);
+    if (box.isEmpty()) return false;
+    bool changed = false;
+    for (int d = 0; d < 2; ++d) {
+        const double L = periods[d];
+        if (!(L > 0.0)) continue;
+        const auto [a, b] = domain(surface, d);
+        const bool below = box.min()[d] < a - kOutsideDomain * L, above = box.max()[d] > b + kOutsideDomain * L;
+        if (!below && !above) continue;
+        const double lo = below ? box.min()[d] - kCoverPadding * L : a;
+        const double hi = above ? box.max()[d] + kCoverPadding * L : b;
+        if (hi - lo > geom::kMaxPeriods * L) continue;
+        surface = geom::extend_closed_surface(surface, d, lo, hi, tolerance);
+        changed = true;
+    }
+    return changed;
+}
+
+}  // namespace trimkit::io

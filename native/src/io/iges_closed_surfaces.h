@@ -1,0 +1,62 @@
+// Trim loops on closed surfaces, for IgesReader's topology. A surface closed in
+// u or v (geom::is_closed_surface) is periodic there with the domain length as
+// period; files trim such surfaces with loops that run across the seam (a loop
+// on u in [-π/2, π/2] of a surface of revolution on [0, 2π]) or whose coedges
+// continue on the seam's other side. The loops are unwrapped (each coedge shifted
+// by whole periods to start where the previous one ends) and the surface is
+// extended over them (geom::extend_closed_surface, exact), so the face is the
+// region the file means instead of the part of it inside the domain.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geom/face.h"
+
+namespace trimkit::io {
+
+// Period per direction: 0 where the surface is not closed.
+struct SurfacePeriods {
+    double u = 0.0, v = 0.0;
+    double operator[](int d) const { return d == 0 ? u : v; }
+    bool any() const { return u > 0.0 || v > 0.0; }
+};
+
+// Closed directions of `s` (boundary rows within `tolerance`, model units).
+SurfacePeriods closed_periods(const geom::NurbsSurface& s, double tolerance);
+
+// uv in s's domain: taken modulo the period in closed directions, clamped in the others.
+Eigen::Vector2d wrap_into_domain(const geom::NurbsSurface& s, const SurfacePeriods& periods,
+                                 Eigen::Vector2d uv);
+
+// Shifts coedges by whole periods so that each starts within half a period of
+// where the previous one ends (the first stays). Returns true if any moved.
+bool unwrap_loop(geom::Loop& loop, const SurfacePeriods& periods);
+
+// A loop that winds around a closed direction (after unwrap_loop its end lies
+// a whole number w of periods from its start) bounds a region only together
+// with a full turn along an iso-curve: the tessellator bridges the gap where it
+// is, so the gap is moved to the joint whose iso-curve (at the joint's other
+// parameter, over one period) is shortest in model space - a pole or the small
+// end circle of a cone, not the circle across the face (PRO19800.igs: a half cone
+// whose model-space trim rounds the apex). Coedges after that joint are shifted
+// by -w periods. Returns the iso-curve's length, or -1 if nothing moved.
+double settle_winding(geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods);
+
+// Extends `surface` in its closed directions past each end of its domain that the
+// loops (sampled) pass by more than kOutsideDomain of the period, to their
+// extreme plus kCoverPadding of the period; the domain is kept and the coedges
+// stay as they are (the extension keeps the parameterisation). Returns true if
+// the surface changed. Ranges wider than geom::kMaxPeriods periods are left alone.
+bool cover_loops(geom::NurbsSurface& surface, const std::vector<geom::Loop>& loops,
+                 const SurfacePeriods& periods, double tolerance);
+
+// Overshoot below 1e-6 of a period is rounding: the clamped surface is within
+// 1e-6 of the surface's size there.
+constexpr double kOutsideDomain = 1e-6;
+// The extension reaches this fraction of the period past the loops' sampled
+// extreme (a curve between samples may bulge slightly beyond it).
+constexpr double kCoverPadding = 1e-4;
+
+}  // namespace trimkit::io
