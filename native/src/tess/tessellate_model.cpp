@@ -15,6 +15,7 @@
 #include "mesh/weld_vertices.h"
 #include "tess/approximate_trim_curve.h"
 #include "tess/close_t_junctions.h"
+#include "tess/pcurve_edge_gap.h"
 #include "tess/repair_trim_loop.h"
 #include "tess/share_edge_points.h"
 #include "tess/snap_boundary_vertices.h"
@@ -45,6 +46,10 @@ constexpr double kSplitUvShare = 1e-3;
 // Pieces of a self-crossing trim loop narrower than this share of the tolerance are
 // dropped (repair_trim_loop): the gap they leave is narrower still.
 constexpr double kSliverWidthShare = 0.01;
+// An edge whose first face's p-curve strays farther than this share of the
+// tolerance from its 3D curve is approximated on its second face instead when that
+// one follows the curve at least twice as closely (pcurve_edge_gap.h).
+constexpr double kEdgeGapShare = 0.1;
 // Samples per trim curve and per side of the (u,v) grid for model_diagonal.
 constexpr int kDiagonalCurveSamples = 16, kDiagonalGridSamples = 12;
 
@@ -274,7 +279,8 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
                     if (mapped.max_gap > options.tolerance)
                         out.warnings.push_back("face " + std::to_string(f) + ": edge " + std::to_string(e) +
                                                " lies " + geom::format_value(mapped.max_gap) +
-                                               " from the surface (more than the tolerance)");
+                                               " from the surface (more than the tolerance: the file's edge is that "
+                                               "far off this face, and the mesh follows the edge)");
                     polylines.push_back(std::move(mapped.polyline));
                 } else {
                     polylines.push_back(approximate_trim_curve(face.surface, coedge.curve, trim_tol, attempt.method));
@@ -342,16 +348,33 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
     // Phase 1: each shared edge approximated once, on the first face (in face order)
     // that uses it.
     auto start = Clock::now();
-    std::vector<CoedgeRef> first(model.edges.size());
+    std::vector<CoedgeRef> first(model.edges.size()), second(model.edges.size());
     std::vector<int> shared;
     for (size_t f = 0; f < model.faces.size(); ++f)
         for (size_t l = 0; l < model.faces[f].loops.size(); ++l)
             for (size_t c = 0; c < model.faces[f].loops[l].coedges.size(); ++c) {
                 const int e = model.faces[f].loops[l].coedges[c].edge;
-                if (e < 0 || e >= static_cast<int>(model.edges.size()) || first[e].face >= 0) continue;
-                first[e] = {static_cast<int>(f), static_cast<int>(l), static_cast<int>(c)};
-                shared.push_back(e);
+                if (e < 0 || e >= static_cast<int>(model.edges.size()) || second[e].face >= 0) continue;
+                const CoedgeRef ref{static_cast<int>(f), static_cast<int>(l), static_cast<int>(c)};
+                if (first[e].face < 0) {
+                    first[e] = ref;
+                    shared.push_back(e);
+                } else {
+                    second[e] = ref;
+                }
             }
+    // The face whose p-curve follows the edge's 3D curve gives the edge its points.
+    parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
+        const int e = shared[k];
+        if (second[e].face < 0 || !model.edges[e].curve) return;
+        const auto gap = [&](const CoedgeRef& r) {
+            const geom::Face& face = model.faces[r.face];
+            return pcurve_edge_gap(face.surface, face.loops[r.loop].coedges[r.coedge].curve, *model.edges[e].curve);
+        };
+        const double first_gap = gap(first[e]);
+        if (first_gap > kEdgeGapShare * options.tolerance && 2.0 * gap(second[e]) < first_gap)
+            std::swap(first[e], second[e]);
+    });
     std::vector<std::optional<TrimPolyline>> edge_polyline(model.edges.size());
     std::vector<std::vector<Eigen::Vector3d>> edge_points(model.edges.size());
     parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {

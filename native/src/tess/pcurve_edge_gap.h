@@ -1,0 +1,18 @@
+// How far a face's p-curve strays from its edge's 3D curve. Files give edges whose
+// faces disagree (bm2_ec_exhaust-A: one face's p-curve image 3.5 mm off the edge
+// curve, within the edge's tolerance of 3.68 mm, the other face's on it);
+// tessellate_model lets the face that follows the edge best give the edge its
+// points, so the shared boundary lies where the file's edge is.
+#pragma once
+
+#include "geom/nurbs_curve.h"
+#include "geom/nurbs_surface.h"
+
+namespace trimkit::tess {
+
+// Largest distance from S(c(t)), at kGapSamples + 1 points of c's domain, to the
+// edge's 3D curve sampled as a polyline of kEdgeSamples chords (their error is far
+// below the gaps worth choosing by).
+double pcurve_edge_gap(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, const geom::NurbsCurve3d& edge);
+
+}  // namespace trimkit::tess
