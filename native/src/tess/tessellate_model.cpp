@@ -15,6 +15,7 @@
 #include "mesh/weld_vertices.h"
 #include "tess/approximate_trim_curve.h"
 #include "tess/close_t_junctions.h"
+#include "tess/fill_sliver_holes.h"
 #include "tess/pcurve_edge_gap.h"
 #include "tess/repair_trim_loop.h"
 #include "tess/share_edge_points.h"
@@ -50,6 +51,10 @@ constexpr double kSliverWidthShare = 0.01;
 // tolerance from its 3D curve is approximated on its second face instead when that
 // one follows the curve at least twice as closely (pcurve_edge_gap.h).
 constexpr double kEdgeGapShare = 0.1;
+// Holes of the joined mesh at most this many sides long and narrower than the trims'
+// own tolerance (below what the trim polylines can tell apart; what repair_trim_loop
+// drops and the crossings it leaves) are filled (fill_sliver_holes).
+constexpr int kSliverHoleSides = 64;
 // Samples per trim curve and per side of the (u,v) grid for model_diagonal.
 constexpr int kDiagonalCurveSamples = 16, kDiagonalGridSamples = 12;
 
@@ -469,6 +474,7 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
         const double weld_tol = (shared.empty() ? 1.0 : kSharedEdgeWeldShare) * options.tolerance;
         snap_boundary_vertices(m, weld_tol);
         close_t_junctions(m, weld_tol);
+        fill_sliver_holes(m, trim_tol, kSliverHoleSides);
         flag_edges(m, options.angle);
         result.open_edges = count_position_open_edges(m);
     }
