@@ -105,7 +105,8 @@ std::vector<TopoDS_Wire> ordered_wires(const TopoDS_Face& face) {
 geom::Face convert_face(const TopoDS_Face& located, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
     geom::Face out;
     out.reversed = located.Orientation() == TopAbs_REVERSED;
-    // Loops are read from the forward face, so the outer loop runs counter-clockwise.
+    // Loops are read from the forward face, so the outer loop runs counter-clockwise;
+    // translated_face mirrors them for a reversed face (face.h's convention).
     const TopoDS_Face face = TopoDS::Face(located.Oriented(TopAbs_FORWARD));
     TopLoc_Location loc;
     const Handle(Geom_Surface) s = BRep_Tool::Surface(face, loc);
@@ -221,12 +222,30 @@ geom::Face converted_face(const TopoDS_Face& located, const TopTools_IndexedMapO
     return out;
 }
 
-geom::Face translated_face(const TopoDS_Face& face, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
-    try {
-        return convert_face(face, edges, edge_offset);
-    } catch (const UntranslatedKind&) {
-        return converted_face(face, edges, edge_offset);
+// Each loop traversed the other way: coedges in reverse order, each curve reversed
+// and running the other way along its edge.
+void mirror_loops(geom::Face& face) {
+    for (geom::Loop& loop : face.loops) {
+        std::reverse(loop.coedges.begin(), loop.coedges.end());
+        for (geom::Coedge& coedge : loop.coedges) {
+            coedge.curve = coedge.curve.reversed();
+            coedge.edge_reversed = !coedge.edge_reversed;
+        }
     }
+}
+
+// The face translated; a reversed face's loops mirrored, so that the outer loop of
+// a face whose normal is Su x Sv runs counter-clockwise and of a reversed one
+// clockwise, as the IGES reader gives them (face.h).
+geom::Face translated_face(const TopoDS_Face& face, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
+    geom::Face out;
+    try {
+        out = convert_face(face, edges, edge_offset);
+    } catch (const UntranslatedKind&) {
+        out = converted_face(face, edges, edge_offset);
+    }
+    if (face.Orientation() == TopAbs_REVERSED) mirror_loops(out);
+    return out;
 }
 
 // The face translated, healed and translated again when its loops do not close.
