@@ -7,7 +7,7 @@
 namespace trimkit::tess {
 namespace {
 
-constexpr int kGapSamples = 16, kEdgeSamples = 256;
+constexpr int kGapSamples = 8, kEdgeSamples = 64;
 
 double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     const Eigen::Vector3d d = b - a;

@@ -10,9 +10,10 @@
 
 namespace trimkit::tess {
 
-// Largest distance from S(c(t)), at kGapSamples + 1 points of c's domain, to the
-// edge's 3D curve sampled as a polyline of kEdgeSamples chords (their error is far
-// below the gaps worth choosing by).
+// Largest distance from S(c(t)), at 9 points of c's domain, to the edge's 3D curve
+// sampled as a polyline of 64 chords: a coarse figure (a full circle's chords are
+// 0.0012 R off it), enough to choose the face that follows the edge when the other
+// strays by a share of T.
 double pcurve_edge_gap(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, const geom::NurbsCurve3d& edge);
 
 }  // namespace trimkit::tess

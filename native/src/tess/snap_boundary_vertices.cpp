@@ -89,6 +89,43 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
     ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
     if (ends.size() < 2) return 0;
 
+    // Candidate pairs within the tolerance, closest first (ties by position).
+    const double cell = tolerance;
+    auto key = [&](const Eigen::Vector3d& p) { return GridCell::of(p, cell); };
+    std::unordered_map<GridCell, std::vector<std::int32_t>, GridCellHash> grid;
+    for (std::int32_t g : ends) grid[key(mesh.positions[g])].push_back(g);
+    struct Pair {
+        double d;
+        std::int32_t a, b;
+    };
+    std::vector<Pair> pairs;
+    for (std::int32_t g : ends) {
+        const GridCell k = key(mesh.positions[g]);
+        for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dy = -1; dy <= 1; ++dy)
+                for (long long dz = -1; dz <= 1; ++dz) {
+                    const auto it = grid.find({k.x + dx, k.y + dy, k.z + dz});
+                    if (it == grid.end()) continue;
+                    for (std::int32_t h : it->second) {
+                        if (!position_less(mesh.positions[g], mesh.positions[h])) continue;
+                        const double d = (mesh.positions[g] - mesh.positions[h]).norm();
+                        if (d <= tolerance) pairs.push_back({d, g, h});
+                    }
+                }
+    }
+    std::sort(pairs.begin(), pairs.end(), [&](const Pair& x, const Pair& y) {
+        if (x.d != y.d) return x.d < y.d;
+        if (mesh.positions[x.a] != mesh.positions[y.a]) return position_less(mesh.positions[x.a], mesh.positions[y.a]);
+        return position_less(mesh.positions[x.b], mesh.positions[y.b]);
+    });
+
+    if (pairs.empty()) return 0;
+    // Only groups in some pair can join: the maps below are built for them.
+    std::vector<std::int32_t> involved;
+    for (const Pair& p : pairs) involved.push_back(p.a), involved.push_back(p.b);
+    std::sort(involved.begin(), involved.end());
+    involved.erase(std::unique(involved.begin(), involved.end()), involved.end());
+
     // Groups sharing a triangle may never meet; nor may two vertices of one face
     // (a face's own boundary is closed by its triangulation, and folding it onto
     // itself would fold triangles).
@@ -101,7 +138,7 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
     std::unordered_map<std::int32_t, Eigen::AlignedBox2d> uv_box;
     {
         std::vector<char> is_end(mesh.positions.size(), 0);
-        for (std::int32_t g : ends) is_end[g] = 1;
+        for (std::int32_t g : involved) is_end[g] = 1;
         const bool with_uvs = mesh.has_face_ids() && mesh.has_uvs();
         for (std::size_t i = 0; i < topology.triangles.size(); ++i) {
             const auto& t = topology.triangles[i];
@@ -142,42 +179,12 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
         return any;
     };
 
-    // Candidate pairs within the tolerance, closest first (ties by position).
-    const double cell = tolerance;
-    auto key = [&](const Eigen::Vector3d& p) { return GridCell::of(p, cell); };
-    std::unordered_map<GridCell, std::vector<std::int32_t>, GridCellHash> grid;
-    for (std::int32_t g : ends) grid[key(mesh.positions[g])].push_back(g);
-    struct Pair {
-        double d;
-        std::int32_t a, b;
-    };
-    std::vector<Pair> pairs;
-    for (std::int32_t g : ends) {
-        const GridCell k = key(mesh.positions[g]);
-        for (long long dx = -1; dx <= 1; ++dx)
-            for (long long dy = -1; dy <= 1; ++dy)
-                for (long long dz = -1; dz <= 1; ++dz) {
-                    const auto it = grid.find({k.x + dx, k.y + dy, k.z + dz});
-                    if (it == grid.end()) continue;
-                    for (std::int32_t h : it->second) {
-                        if (!position_less(mesh.positions[g], mesh.positions[h])) continue;
-                        const double d = (mesh.positions[g] - mesh.positions[h]).norm();
-                        if (d <= tolerance) pairs.push_back({d, g, h});
-                    }
-                }
-    }
-    std::sort(pairs.begin(), pairs.end(), [&](const Pair& x, const Pair& y) {
-        if (x.d != y.d) return x.d < y.d;
-        if (mesh.positions[x.a] != mesh.positions[y.a]) return position_less(mesh.positions[x.a], mesh.positions[y.a]);
-        return position_less(mesh.positions[x.b], mesh.positions[y.b]);
-    });
-
     // Union of clusters, each with its members, its representative (smallest
     // position) and the groups its members share triangles with.
     std::unordered_map<std::int32_t, std::int32_t> parent;
     std::unordered_map<std::int32_t, std::vector<std::int32_t>> members;
     std::unordered_map<std::int32_t, std::set<std::int32_t>> blocked, cluster_faces;
-    for (std::int32_t g : ends) {
+    for (std::int32_t g : involved) {
         parent[g] = g;
         members[g] = {g};
         blocked[g] = neighbours[g];
