@@ -4,10 +4,10 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <optional>
 #include <thread>
+#include <tuple>
 
 #include "geom/error.h"
 #include "geom/flatten_instances.h"
@@ -134,20 +134,23 @@ std::string without_face_prefix(const std::string& what, int f) {
 // Flags face-boundary edges (open, or between different faces) and sharp ones
 // (triangle normals differing by more than `angle`).
 void flag_edges(mesh::Mesh& mesh, double angle) {
-    // Edges by position (vertices are per face); each flagged edge names the
+    // Edges by position (vertices are per face): triangle sides sorted by their
+    // position groups, in triangle order within an edge; each flagged edge names the
     // vertices of its first triangle.
     const std::vector<std::int32_t> group = position_groups(mesh);
-    std::map<std::pair<int, int>, std::vector<int>> uses;
-    std::map<std::pair<int, int>, std::pair<int, int>> named;
+    struct Side {
+        int lo, hi, triangle, va, vb;
+    };
+    std::vector<Side> sides;
+    sides.reserve(3 * mesh.triangles.size());
     for (size_t t = 0; t < mesh.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k) {
             const int va = mesh.triangles[t][k], vb = mesh.triangles[t][(k + 1) % 3];
             const int a = group[va], b = group[vb];
-            if (a == b) continue;
-            const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
-            uses[key].push_back(static_cast<int>(t));
-            named.emplace(key, std::make_pair(va, vb));
+            if (a != b) sides.push_back({std::min(a, b), std::max(a, b), static_cast<int>(t), va, vb});
         }
+    std::stable_sort(sides.begin(), sides.end(),
+                     [](const Side& x, const Side& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); });
     auto normal = [&](int t) {
         const auto& tri = mesh.triangles[t];
         return Eigen::Vector3d((mesh.positions[tri[1]] - mesh.positions[tri[0]])
@@ -155,17 +158,20 @@ void flag_edges(mesh::Mesh& mesh, double angle) {
     };
     const double cos_angle = std::cos(angle);
     mesh.edges.clear();
-    for (const auto& [edge, tris] : uses) {
+    for (size_t i = 0; i < sides.size();) {
+        size_t j = i + 1;
+        while (j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi) ++j;
         std::uint8_t flags = 0;
-        if (tris.size() != 2) {
+        if (j - i != 2) {
             flags |= mesh::kFaceBoundary;
-        } else if (mesh.face_ids[tris[0]] != mesh.face_ids[tris[1]]) {
+        } else if (mesh.face_ids[sides[i].triangle] != mesh.face_ids[sides[i + 1].triangle]) {
             flags |= mesh::kFaceBoundary;
-            const Eigen::Vector3d n0 = normal(tris[0]), n1 = normal(tris[1]);
+            const Eigen::Vector3d n0 = normal(sides[i].triangle), n1 = normal(sides[i + 1].triangle);
             const double len = n0.norm() * n1.norm();
             if (len > 0.0 && n0.dot(n1) < cos_angle * len) flags |= mesh::kSharp;
         }
-        if (flags) mesh.edges.push_back({named[edge].first, named[edge].second, flags});
+        if (flags) mesh.edges.push_back({sides[i].va, sides[i].vb, flags});
+        i = j;
     }
 }
 
