@@ -21,6 +21,7 @@
 #include "tess/share_edge_points.h"
 #include "tess/snap_boundary_vertices.h"
 #include "tess/tessellate_face.h"
+#include "tess/trim_area_loss.h"
 #include "tess/verify_face.h"
 
 namespace trimkit::tess {
@@ -55,6 +56,17 @@ constexpr double kEdgeGapShare = 0.1;
 // own tolerance (below what the trim polylines can tell apart; what repair_trim_loop
 // drops and the crossings it leaves) are filled (fill_sliver_holes).
 constexpr int kSliverHoleSides = 64;
+// A model whose trim chords lose (or gain) more than kTrimAreaShare of its mesh's area
+// (trim_area_loss.h: a model of thin faces, or of long chords that bow in 3D) is
+// meshed again with trims finer by kTrimAreaMargin times share / loss (the loss
+// falls about linearly with the trim tolerance), by 1 / kMaxTrimScale to
+// 1 / kMinTrimScale per round, for at most kTrimAreaRounds rounds; the pass that
+// loses least is kept.
+// Issue 9 accepts 0.2 % of the area; the cells take their share of that too.
+constexpr double kTrimAreaShare = 1e-3;
+constexpr double kTrimAreaMargin = 0.7;
+constexpr double kMinTrimScale = 1.0 / 16.0, kMaxTrimScale = 0.5;
+constexpr int kTrimAreaRounds = 4;
 // Samples per trim curve and per side of the (u,v) grid for model_diagonal.
 constexpr int kDiagonalCurveSamples = 16, kDiagonalGridSamples = 12;
 
@@ -94,6 +106,7 @@ struct FaceOutput {
     FaceTimings timings;
     double trim_seconds = 0.0;
     double verify_seconds = 0.0;
+    double trim_loss = 0.0;  // area the trim chords lose (trim_area_loss)
 };
 
 // Phase 1's shared edges, for the faces.
@@ -264,11 +277,10 @@ FailedFace failed_face(int f, const FaceOutput& out) {
 
 // Meshes face f one way (`attempt`), welds it and verifies the mesh. Any failure
 // (an exception, no triangles, a rejected mesh) is out.error, naming the face.
-FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions& options, const SharedEdges& edges,
-                     const FaceAttempt& attempt) {
+FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions& options, double trim_tol,
+                     const SharedEdges& edges, const FaceAttempt& attempt) {
     const geom::Face& face = model.faces[f];
     FaceOutput out;
-    const double trim_tol = trim_tolerance(options);
     try {
         const auto trim_start = Clock::now();
         const double snap_uv = kSnapUvRelative * uv_diagonal(face.surface);
@@ -301,6 +313,9 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
             }
             LoopRepairReport report;
             const TrimPolygon joined = join_trim_loop(polylines, loop.outer, snap_uv, &report);
+            const bool region_left = region_left_of(joined, loop.outer);
+            for (size_t c = 0; c < polylines.size(); ++c)
+                out.trim_loss += trim_area_loss(face.surface, loop.coedges[c].curve, polylines[c], region_left);
             for (TrimPolygon& p : repair_trim_loop(joined, snap_uv, &report, face.reversed, &face.surface,
                                                    attempt.sliver_share * options.tolerance))
                 polygons.push_back(std::move(p));
@@ -344,17 +359,18 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
     return out;
 }
 
-}  // namespace
 
-TessellationResult tessellate_model(const geom::Model& model, const TessellationOptions& options) {
-    validate(options);
+// One pass over the model with trims at trim_scale times their share of the
+// tolerance; *trim_loss gets the area the trim chords lose, summed over the faces.
+TessellationResult tessellate_pass(const geom::Model& model, const TessellationOptions& options, double trim_scale,
+                                   double* trim_loss) {
     TessellationResult result;
     result.faces = static_cast<int>(model.faces.size());
     result.tolerance = options.tolerance;
     const int threads = options.threads > 0
                             ? options.threads
                             : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    const double trim_tol = trim_tolerance(options);
+    const double trim_tol = trim_scale * trim_tolerance(options);
 
     // Phase 1: each shared edge approximated once, on the first face (in face order)
     // that uses it.
@@ -421,9 +437,9 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
     std::vector<FaceOutput> outputs(model.faces.size());
     parallel_for(static_cast<int>(model.faces.size()), threads, [&](int f) {
         FaceOutput& out = outputs[f];
-        out = mesh_face(model, f, options, edges, first_attempt(options));
+        out = mesh_face(model, f, options, trim_tol, edges, first_attempt(options));
         if (out.error.empty()) return;
-        FaceOutput retry = mesh_face(model, f, options, edges, second_attempt(options));
+        FaceOutput retry = mesh_face(model, f, options, trim_tol, edges, second_attempt(options));
         const double trim_seconds = out.trim_seconds + retry.trim_seconds;
         const double verify_seconds = out.verify_seconds + retry.verify_seconds;
         FaceTimings timings = retry.timings;
@@ -457,6 +473,7 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
             continue;
         }
         if (out.mesh.triangle_count() == 0) continue;
+        *trim_loss += out.trim_loss;
         ++result.faces_meshed;
         mesh::append(result.mesh, out.mesh);
         out.mesh = mesh::Mesh();
@@ -485,6 +502,54 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
         result.open_edges = count_position_open_edges(m);
     }
     result.seconds.weld = seconds_since(start);
+    return result;
+}
+
+// |loss| as a share of the mesh's area (0 for an empty mesh).
+double lost_share(double loss, const mesh::Mesh& mesh) {
+    const double area = mesh::surface_area(mesh);
+    return area > 0.0 ? std::abs(loss) / area : 0.0;
+}
+
+// Adds the seconds of `pass` to `total`.
+void add_seconds(TessellationTimings& total, const TessellationTimings& pass) {
+    total.trim += pass.trim;
+    total.surface += pass.surface;
+    total.triangulate += pass.triangulate;
+    total.weld += pass.weld;
+    total.verify += pass.verify;
+}
+
+}  // namespace
+
+TessellationResult tessellate_model(const geom::Model& model, const TessellationOptions& options) {
+    validate(options);
+    double loss = 0.0;
+    TessellationResult result = tessellate_pass(model, options, 1.0, &loss);
+    double share = lost_share(loss, result.mesh);
+    const double first_share = share;
+    double scale = 1.0;
+    double next = 1.0;
+    for (int round = 0; round < kTrimAreaRounds && share > kTrimAreaShare; ++round) {
+        // A polyline's points change in steps, so a round that loses no less still
+        // lowers the scale for the next.
+        next *= std::clamp(kTrimAreaMargin * kTrimAreaShare / share, kMinTrimScale, kMaxTrimScale);
+        double finer_loss = 0.0;
+        TessellationResult finer = tessellate_pass(model, options, next, &finer_loss);
+        add_seconds(result.seconds, finer.seconds);
+        const double finer_share = lost_share(finer_loss, finer.mesh);
+        if (finer.failed_faces.size() > result.failed_faces.size()) break;
+        if (!(finer_share < share)) continue;
+        finer.seconds = result.seconds;
+        result = std::move(finer);
+        share = finer_share;
+        scale = next;
+    }
+    if (scale < 1.0)
+        result.warnings.push_back("the trim chords lost " + geom::format_value(100.0 * first_share) +
+                                  " % of the area at the trims' share of the tolerance; trims made " +
+                                  geom::format_value(1.0 / scale) + " times finer (now " +
+                                  geom::format_value(100.0 * share) + " %)");
     return result;
 }
 
