@@ -11,6 +11,10 @@
 namespace trimkit::tess {
 namespace {
 
+// A hole's cycle runs its open sides the filling way where it can: a side taken
+// against that way costs this many times its length.
+constexpr double kBackwardCost = 2.0;
+
 // A side of the hole in the direction a filling triangle runs it (against the open
 // side of the triangle beside it): from group `from` to group `to`, with the mesh
 // vertex at `from` (from that triangle) and the triangle's face.
@@ -18,7 +22,8 @@ struct HoleSide {
     std::int32_t from = 0, to = 0;
     std::int32_t vertex = 0, end_vertex = 0;  // mesh vertices at `from` and `to`
     std::int32_t face = 0;
-    std::size_t index = 0;  // in the list of sides
+    std::size_t index = 0;  // in the list of open sides
+    bool backward = false;  // runs along its open side (a neighbour folded the wrong way)
 };
 
 // The hole's width as 2 A / P (A the area of its fan from the first vertex, P its
@@ -62,8 +67,9 @@ std::vector<HoleSide> shortest_cycle(const mesh::Mesh& mesh, const std::vector<H
         const auto [lo, hi] = by_start.equal_range(g);
         for (auto it = lo; it != hi; ++it) {
             const std::size_t k = it->second;
-            if (used[k] || k == first) continue;
-            const double step = (mesh.positions[sides[k].vertex] - mesh.positions[sides[k].end_vertex]).norm();
+            if (used[sides[k].index] || sides[k].index == sides[first].index) continue;
+            const double length = (mesh.positions[sides[k].vertex] - mesh.positions[sides[k].end_vertex]).norm();
+            const double step = sides[k].backward ? kBackwardCost * length : length;
             const auto found = labels.find(sides[k].to);
             if (found != labels.end() && found->second.distance <= d + step) continue;
             labels[sides[k].to] = {d + step, here.count + 1, k};
@@ -99,11 +105,21 @@ int fill_sliver_holes(mesh::Mesh& mesh, double width, int max_sides) {
         h.index = sides.size();
         sides.push_back(h);
     }
+    // Each open side also the other way round, for holes whose boundary a folded
+    // neighbour turned (bug32596: two chains from one vertex to another).
+    const std::size_t open = sides.size();
+    for (std::size_t s = 0; s < open; ++s) {
+        HoleSide back = sides[s];
+        std::swap(back.from, back.to);
+        std::swap(back.vertex, back.end_vertex);
+        back.backward = true;
+        sides.push_back(back);
+    }
     std::multimap<std::int32_t, std::size_t> by_start;
     for (std::size_t s = 0; s < sides.size(); ++s) by_start.emplace(sides[s].from, s);
-    std::vector<char> used(sides.size(), 0);
+    std::vector<char> used(open, 0);
     int filled = 0;
-    for (std::size_t s = 0; s < sides.size(); ++s) {
+    for (std::size_t s = 0; s < open; ++s) {
         if (used[s]) continue;
         const std::vector<HoleSide> cycle = shortest_cycle(mesh, sides, s, by_start, used, max_sides);
         if (cycle.size() < 3 || !(hole_width(mesh, cycle) <= width)) continue;

@@ -51,5 +51,17 @@ TEST(FillSliverHoles, HoleWiderThanTheWidthStaysOpen) {
     EXPECT_EQ(count_position_open_edges(m), 5u);
 }
 
+TEST(FillSliverHoles, HoleWhoseNeighbourRunsTheOtherWayIsClosed) {
+    // Face 2's triangle flipped (A B F): its side along the hole runs A -> B like the
+    // fan would, so no cycle runs every side against its triangle (bug32596 after the
+    // trims spent their share: two chains from one vertex to another).
+    mesh::Mesh m = square_less_sliver();
+    m.triangles[3] = {0, 1, 5};
+    ASSERT_EQ(count_position_open_edges(m), 8u);
+    const double perimeter = 1.0 + 2.0 * std::sqrt(0.25 + kHeight * kHeight);
+    EXPECT_EQ(fill_sliver_holes(m, 1.01 * kHeight / perimeter, 64), 1);
+    EXPECT_EQ(count_position_open_edges(m), 5u);
+}
+
 }  // namespace
 }  // namespace trimkit::tess
