@@ -342,6 +342,36 @@ std::string near_pole_warning(double iso) {
            "sample spacing instead (issue 9: the mesh weld cannot take boundaries closer than the tolerance)";
 }
 
+// The face's loops from the file's segments, as LoopBuilder makes them (with a
+// natural outer loop first when `natural_outer`; loop 1 flagged outer when
+// `first_is_outer`), on surfaces closed in u or v unwrapped and covered. Model-space
+// trims are projected adaptively; where that rounds a near-pole end (cover_closed_surface)
+// the loops are built again from project_curve's samples, with a warning.
+void build_face_loops(IgesReader& r, const IgesSurface& S, const BoundaryHint& hint,
+                      const std::vector<std::vector<Segment>>& loops, bool natural_outer, bool first_is_outer,
+                      geom::Face& face) {
+    const std::size_t warnings_before = face.warnings.size();
+    auto build = [&](double projection_tol) {
+        face.surface = S.nurbs;
+        face.loops.clear();
+        face.warnings.resize(warnings_before);
+        if (natural_outer) face.loops.push_back(geom::natural_boundary_loop(S.nurbs));
+        for (std::size_t i = 0; i < loops.size(); ++i) {
+            geom::Loop loop;
+            loop.outer = first_is_outer && i == 0;
+            LoopBuilder lb(r, S, face, static_cast<int>(i + 1), projection_tol);
+            for (const Segment& seg : loops[i]) lb.add(seg, loop);
+            lb.settle_seam_sides(loop);
+            face.loops.push_back(std::move(loop));
+        }
+        return cover_closed_surface(r, face, natural_outer);
+    };
+    if (const double iso = build(projection_tolerance(hint, S.nurbs)); iso >= 0.0) {
+        build(0.0);
+        face.warnings.push_back(near_pole_warning(iso));
+    }
+}
+
 }  // namespace
 
 // Finishes a face: closes and orients loops, applies the placement, stores it.
@@ -474,26 +504,7 @@ std::vector<int> IgesReader::read_face_entity(int de, const Eigen::Affine3d& pla
         }
         IgesSurface S = surface(surface_de, hint.empty() ? nullptr : &hint);
         face.surface_kind = S.kind;
-        const std::size_t warnings_before = face.warnings.size();
-        auto build_loops = [&](double projection_tol) {
-            face.surface = S.nurbs;
-            face.loops.clear();
-            face.warnings.resize(warnings_before);
-            if (natural_outer) face.loops.push_back(geom::natural_boundary_loop(S.nurbs));
-            for (std::size_t i = 0; i < loops.size(); ++i) {
-                geom::Loop loop;
-                loop.outer = first_is_outer && i == 0;
-                LoopBuilder lb(*this, S, face, static_cast<int>(i + 1), projection_tol);
-                for (const Segment& s : loops[i]) lb.add(s, loop);
-                lb.settle_seam_sides(loop);
-                face.loops.push_back(std::move(loop));
-            }
-            return cover_closed_surface(*this, face, natural_outer);
-        };
-        if (const double iso = build_loops(projection_tolerance(hint, S.nurbs)); iso >= 0.0) {
-            build_loops(0.0);
-            face.warnings.push_back(near_pole_warning(iso));
-        }
+        build_face_loops(*this, S, hint, loops, natural_outer, first_is_outer, face);
         // The outer loop encloses the others, so it has the largest area; some
         // writers list a hole first (UKI60998.igs: a 143 whose first boundary is
         // a circular hole, the rectangle second). Trust the areas over the order.
@@ -589,24 +600,7 @@ int IgesReader::read_brep_face(int de, const Eigen::Affine3d& placement, bool re
     }
     IgesSurface S = surface(surface_de, hint.empty() ? nullptr : &hint);
     face.surface_kind = S.kind;
-    const std::size_t warnings_before = face.warnings.size();
-    auto build_loops = [&](double projection_tol) {
-        face.surface = S.nurbs;
-        face.loops.clear();
-        face.warnings.resize(warnings_before);
-        for (std::size_t i = 0; i < loops.size(); ++i) {
-            geom::Loop loop;
-            LoopBuilder lb(*this, S, face, static_cast<int>(i + 1), projection_tol);
-            for (const Segment& s : loops[i]) lb.add(s, loop);
-            lb.settle_seam_sides(loop);
-            face.loops.push_back(std::move(loop));
-        }
-        return cover_closed_surface(*this, face, false);
-    };
-    if (const double iso = build_loops(projection_tolerance(hint, S.nurbs)); iso >= 0.0) {
-        build_loops(0.0);
-        face.warnings.push_back(near_pole_warning(iso));
-    }
+    build_face_loops(*this, S, hint, loops, false, false, face);
     // Without the outer flag, the loop with the largest extent is the outer one.
     int outer_index = 0;
     if (outer_flag == 0) {
