@@ -361,12 +361,17 @@ def step_sample(name):
     return path
 
 
-def test_step_screw_imports_and_remeshes_from_the_stored_file():
-    path = step_sample("screw.step")
+def import_step_into_empty_scene(path):
+    """The objects the STEP operator adds to an empty scene for `path`."""
     empty_scene()
     before = set(bpy.data.objects)
     assert bpy.ops.import_scene.trimkit_step(filepath=str(path)) == {'FINISHED'}
-    objects = [o for o in bpy.data.objects if o not in before]
+    return [o for o in bpy.data.objects if o not in before]
+
+
+def test_step_screw_imports_and_remeshes_from_the_stored_file():
+    path = step_sample("screw.step")
+    objects = import_step_into_empty_scene(path)
     assert len(objects) == 1, [o.name for o in objects]
     faces = objects[0].trimkit.faces
     assert check_mesh(objects[0]) == set(range(faces)) and faces == 10, (faces, face_ids(objects[0]))
@@ -514,10 +519,7 @@ def world_area(obj):
 
 def test_step_assembly_imports_as_a_collection_tree_of_linked_duplicates():
     path = step_sample("as1-oc-214-mat.stp")
-    empty_scene()
-    before = set(bpy.data.objects)
-    assert bpy.ops.import_scene.trimkit_step(filepath=str(path)) == {'FINISHED'}
-    objects = [o for o in bpy.data.objects if o not in before]
+    objects = import_step_into_empty_scene(path)
     groups = instance_groups(objects)
     assert len(objects) == 18 and len(groups) == 5, (len(objects), len(groups))
     root = bpy.data.collections[path.stem]
