@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace trimkit::tess {
 namespace {
@@ -86,6 +87,13 @@ double surface_size(const geom::NurbsSurface& S) {
     Eigen::AlignedBox3d box;
     for (const Eigen::Vector3d& P : S.points()) box.extend(P);
     return box.diagonal().norm();
+}
+
+// The largest coordinate magnitude: files round coordinates to digits of it.
+double coordinate_size(const geom::NurbsSurface& S) {
+    double r = 0.0;
+    for (const Eigen::Vector3d& P : S.points()) r = std::max(r, P.cwiseAbs().maxCoeff());
+    return r;
 }
 
 // The axis from the widest circular row; false if no row is a circle.
@@ -198,6 +206,158 @@ double pieces(double angle, double radius, double budget) {
 
 double sagitta(double radius, double angle) { return radius * (1.0 - std::cos(0.5 * angle)); }
 
+// ---- Recognition from the control net (any kind; exact up to eps) ----
+// A rational Bezier patch of degree 2 along a whose columns j (fixed b index) are
+//   (1) weights w_ij = u_i v_j (w_ij / w_0j the same for every j),
+//   (2) circular arcs about one axis: P_0j and P_2j at the same (rho, z), P_1j on the
+//       bisecting half-plane at the same z and rho / cos(alpha), alpha half the arc's
+//       angle, u_1 / sqrt(u_0 u_2) = cos(alpha) (the circle conditions, [PT] Sec. 7.5),
+//       all turning the same way from one half-plane, or all on the axis (poles),
+// is R_phi(a) C(b) with C the column a = 0: row j is P_0j turned by phi(a), phi the
+// same for every row (it depends on u and alpha only), and the rational sum over j
+// commutes with the rotation (re-derived from [PT] Sec. 8.5, Algorithm A8.1). Its
+// meridian C lies on a line when the m(P_0j) are collinear (convex hull), and on a
+// circle when the column is a degree-2 arc with the same circle conditions in (rho, z).
+
+// Relative misfit of the weight conditions (files print weights to ~10 digits). A
+// middle weight off by a relative d moves the arc by at most d |P1 - C| <= d size
+// (dC/dw1 = B1 (P1 - C) / W), so the shape's slack adds kWeightTolerance x size.
+constexpr double kWeightTolerance = 1e-7;
+
+// Circle centre of the arc with control points A0, A1, A2 (tangent at A0 and A2
+// meeting at A1): C = A1 + (M - A1) |A1 A0|^2 / |A1 M|^2, M the chord's midpoint.
+template <class V>
+bool arc_centre(const V& A0, const V& A1, const V& A2, V* centre) {
+    const V d = 0.5 * (A0 + A2) - A1;
+    if (!(d.squaredNorm() > 0.0)) return false;
+    *centre = A1 + d * ((A0 - A1).squaredNorm() / d.squaredNorm());
+    return centre->allFinite();
+}
+
+struct NetColumn {
+    Eigen::Vector3d A[3];
+    double w[3];
+};
+
+NetColumn column(const BezierPatch& patch, int angle_dir, int j) {
+    NetColumn c;
+    for (int i = 0; i < 3; ++i) {
+        const int a = angle_dir == 0 ? i : j, b = angle_dir == 0 ? j : i;
+        c.A[i] = patch.euclidean(a, b);
+        c.w[i] = patch.point(a, b)[3];
+    }
+    return c;
+}
+
+// Checks (1) and (2) on every column of the patch; `turn` is the sign of the rows'
+// rotation about the axis, fixed by the first arc met (0 before).
+bool rows_are_arcs(const RevolutionShape& shape, const BezierPatch& patch, double eps, double* turn) {
+    const int columns = (shape.angle_dir == 0 ? patch.q : patch.p) + 1;
+    const NetColumn first = column(patch, shape.angle_dir, 0);
+    Eigen::Vector3d start_dir = Eigen::Vector3d::Zero();
+    for (int j = 0; j < columns; ++j) {
+        const NetColumn c = column(patch, shape.angle_dir, j);
+        for (int i = 0; i < 3; ++i)
+            if (std::abs(c.w[i] / c.w[0] - first.w[i] / first.w[0]) > kWeightTolerance * first.w[i] / first.w[0])
+                return false;
+        const Eigen::Vector2d m0 = shape.meridian(c.A[0]), m2 = shape.meridian(c.A[2]);
+        if ((m0 - m2).norm() > eps || std::abs(shape.meridian(c.A[1]).y() - m0.y()) > eps) return false;
+        if (m0.x() <= eps) {
+            if ((c.A[1] - c.A[0]).norm() > eps || (c.A[2] - c.A[0]).norm() > eps) return false;
+            continue;
+        }
+        const Eigen::Vector3d d0 = c.A[0] - shape.origin, d2 = c.A[2] - shape.origin;
+        const Eigen::Vector3d r0 = d0 - d0.dot(shape.axis) * shape.axis, r2 = d2 - d2.dot(shape.axis) * shape.axis;
+        const double sign = r0.cross(r2).dot(shape.axis) >= 0.0 ? 1.0 : -1.0;
+        if (*turn == 0.0) *turn = sign;
+        if (sign != *turn) return false;
+        if (start_dir.isZero()) start_dir = r0.normalized();
+        if ((r0.normalized() - start_dir).norm() > kWeightTolerance) return false;
+        const double two_alpha = angle_between(r0, r2);
+        if (!(two_alpha < kMaxCellAngle)) return false;
+        const double ca = std::cos(0.5 * two_alpha);
+        const Eigen::Vector3d expected =
+            shape.origin + m0.y() * shape.axis + (r0 + r2).normalized() * (m0.x() / ca);
+        if ((c.A[1] - expected).norm() > eps) return false;
+        if (std::abs(c.w[1] / std::sqrt(c.w[0] * c.w[2]) - ca) > kWeightTolerance) return false;
+    }
+    return true;
+}
+
+// The patch's meridian (column a = 0) on a line, or on the shape's circle (fixed by
+// the first circular patch when `circle` is asked for).
+bool meridian_fits(RevolutionShape* shape, const BezierPatch& patch, bool circle, double eps) {
+    const int n = shape->angle_dir == 0 ? patch.q : patch.p;
+    std::vector<Eigen::Vector2d> m;
+    std::vector<double> v;
+    for (int j = 0; j <= n; ++j) {
+        const int a = shape->angle_dir == 0 ? 0 : j, b = shape->angle_dir == 0 ? j : 0;
+        m.push_back(shape->meridian(patch.euclidean(a, b)));
+        v.push_back(patch.point(a, b)[3]);
+    }
+    if (!circle) {
+        const Eigen::Vector2d d = m.back() - m.front();
+        if (!(d.norm() > eps)) return n == 0;
+        const Eigen::Vector2d normal = Eigen::Vector2d(-d.y(), d.x()).normalized();
+        for (const Eigen::Vector2d& x : m)
+            if (std::abs((x - m.front()).dot(normal)) > eps) return false;
+        return true;
+    }
+    if (n != 2) return false;
+    if (shape->radius == 0.0) {
+        if (!arc_centre(m[0], m[1], m[2], &shape->centre)) return false;
+        shape->radius = (m[0] - shape->centre).norm();
+    }
+    const Eigen::Vector2d e0 = m[0] - shape->centre, e2 = m[2] - shape->centre;
+    if (std::abs(e0.norm() - shape->radius) > eps || std::abs(e2.norm() - shape->radius) > eps) return false;
+    const double two_beta = angle_between(e0, e2);
+    if (!(two_beta < kMaxCellAngle)) return false;
+    const double cb = std::cos(0.5 * two_beta);
+    const Eigen::Vector2d expected = shape->centre + (e0 + e2).normalized() * (shape->radius / cb);
+    return (m[1] - expected).norm() <= eps && std::abs(v[1] / std::sqrt(v[0] * v[2]) - cb) <= kWeightTolerance;
+}
+
+// The axis from the first arc of the first patch with a row off the axis.
+bool net_axis(const std::vector<BezierPatch>& patches, int angle_dir, RevolutionShape* shape) {
+    for (const BezierPatch& patch : patches) {
+        const int columns = (angle_dir == 0 ? patch.q : patch.p) + 1;
+        for (int j = 0; j < columns; ++j) {
+            const NetColumn c = column(patch, angle_dir, j);
+            const Eigen::Vector3d n = (c.A[0] - c.A[1]).cross(c.A[2] - c.A[1]);
+            Eigen::Vector3d centre;
+            if (!(n.norm() > 0.0) || !arc_centre(c.A[0], c.A[1], c.A[2], &centre)) continue;
+            shape->axis = n.normalized();
+            shape->origin = centre;
+            return true;
+        }
+    }
+    return false;
+}
+
+std::optional<RevolutionShape> shape_from_net(const geom::NurbsSurface& S, double eps, double size) {
+    std::vector<BezierPatch> patches;
+    for (const geom::NurbsSurface& b : S.bezier_patches()) patches.push_back(bezier_patch(b));
+    for (int angle_dir : {0, 1}) {
+        if ((angle_dir == 0 ? S.degree_u() : S.degree_v()) != 2) continue;
+        for (bool circle : {false, true}) {
+            RevolutionShape shape;
+            shape.angle_dir = angle_dir;
+            shape.slack = eps + kWeightTolerance * size;
+            shape.circle_meridian = circle;
+            if (!net_axis(patches, angle_dir, &shape)) break;
+            double turn = 0.0;
+            bool ok = true;
+            for (const BezierPatch& patch : patches)
+                if (!rows_are_arcs(shape, patch, eps, &turn) || !meridian_fits(&shape, patch, circle, eps)) {
+                    ok = false;
+                    break;
+                }
+            if (ok) return shape;
+        }
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 Eigen::Vector2d RevolutionShape::meridian(const Eigen::Vector3d& P) const {
@@ -208,10 +368,15 @@ Eigen::Vector2d RevolutionShape::meridian(const Eigen::Vector3d& P) const {
 
 std::optional<RevolutionShape> revolution_shape(const geom::NurbsSurface& S, const std::string& kind) {
     const bool line = kind == "cylinder" || kind == "cone", circle = kind == "sphere" || kind == "torus";
-    if (!line && !circle && kind != "revolution") return std::nullopt;
     const double size = surface_size(S);
     if (!(size > 0.0) || !std::isfinite(size)) return std::nullopt;
-    const double eps = kShapeFitTolerance * size;
+    // Coordinates far from the origin carry the file's rounding of their digits.
+    const double eps = kShapeFitTolerance * (size + coordinate_size(S));
+    // Any rational surface whose control net proves it (B-spline faces of CAD files
+    // are often exact cylinders and tori); else the analytic kinds, found by samples.
+    if (S.is_rational())
+        if (std::optional<RevolutionShape> shape = shape_from_net(S, eps, size)) return shape;
+    if (!line && !circle && kind != "revolution") return std::nullopt;
     for (int angle_dir : {0, 1}) {
         RevolutionShape shape;
         shape.angle_dir = angle_dir;

@@ -29,25 +29,31 @@ struct RevolutionShape {
     // Meridian circle in (rho, z) = (distance from the axis, height along it).
     Eigen::Vector2d centre = Eigen::Vector2d::Zero();
     double radius = 0.0;
-    // Added to every bound: kShapeFitTolerance times the surface's size, the misfit
-    // the recognition accepts.
+    // Added to every bound: the misfit the recognition accepts (kShapeFitTolerance
+    // times the surface's size plus its largest coordinate; with the weight misfit
+    // of a control-net proof, revolution_error.cpp).
     double slack = 0.0;
 
     // (rho, z) of a point.
     Eigen::Vector2d meridian(const Eigen::Vector3d& P) const;
 };
 
-// Relative misfit (to the control box's diagonal) up to which sampled points are
-// taken to lie on the recognised shape: far above the rounding of the exact
-// constructions (~1e-15), far below any tolerance a user asks for.
-constexpr double kShapeFitTolerance = 1e-9;
+// Relative misfit (to the control box's diagonal plus the largest coordinate) up to
+// which points are taken to lie on the recognised shape: above the rounding of
+// coordinates printed to 10 digits in IGES files (hammer.iges: 1.7e-5 at 2e4),
+// far below any tolerance a user asks for.
+constexpr double kShapeFitTolerance = 1e-8;
 
-// The shape of `S` when `kind` (geom::Face::surface_kind) is one of "cylinder",
-// "cone", "sphere", "torus", "revolution" and samples of S confirm it: rows in one
-// direction are circles about one axis (within kShapeFitTolerance), and the meridian
-// is a line or a circle. The kind promises an exact construction
-// (geom/analytic_surfaces.h, io/occt_geometry.cpp); the samples only find its axis
-// and reject a surface a transform has deformed. Empty otherwise.
+// The shape of `S`, or empty:
+//  - any rational S whose control net proves it (revolution_error.cpp: every row of
+//    every Bezier patch a degree-2 circular arc about one axis with separable weights,
+//    the meridian's control points collinear or a circular arc), within
+//    kShapeFitTolerance; B-spline faces of CAD files are often exact cylinders or tori;
+//  - else, when `kind` (geom::Face::surface_kind) is "cylinder", "cone", "sphere",
+//    "torus" or "revolution", samples of S: rows in one direction are circles about one
+//    axis and the meridian is a line or a circle. The kind promises an exact
+//    construction (geom/analytic_surfaces.h, io/occt_geometry.cpp); the samples only
+//    find its axis and reject a surface a transform has deformed.
 std::optional<RevolutionShape> revolution_shape(const geom::NurbsSurface& S, const std::string& kind);
 
 // Bound on the distance to S of any point of a triangle whose vertices are points
