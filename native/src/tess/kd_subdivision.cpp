@@ -35,7 +35,18 @@ struct TrimSegments {
     double total_tolerance = 0.0;     // cells a segment meets: bound + crossing offset
     double margin = 0.0;              // absolute, in (u,v)
     bool active = false;              // false: every cell uses `tolerance`
+    const RevolutionShape* shape = nullptr;  // exact bound (revolution_error) if set
 };
+
+// The cell's bound: revolution_error where it applies, else bilinear_error.
+BilinearError cell_error(const TrimSegments& trims, const BezierPatch& patch, ErrorMode mode,
+                         double tolerance) {
+    if (trims.shape) {
+        const BilinearError exact = revolution_error(*trims.shape, patch, tolerance);
+        if (std::isfinite(exact.bound)) return exact;
+    }
+    return bilinear_error(patch, mode, tolerance);
+}
 
 // True if segment a b meets the closed rectangle grown by `margin` (Liang-Barsky);
 // then [*lo, *hi] is the part of the segment inside.
@@ -152,7 +163,7 @@ void subdivide(const BezierPatch& patch, TrimSegments& trims, const Stretch& str
                                               crossing_offset(trims, node.segments, r,
                                                               trims.total_tolerance - trims.tolerance)));
         }
-        const BilinearError error = bilinear_error(current, mode, tolerance);
+        const BilinearError error = cell_error(trims, current, mode, tolerance);
         if (!std::isfinite(error.bound))
             throw geom::NumericalFailure(
                 "kd_subdivision: non-finite bilinear error on cell [" + format_value(current.u0) +
@@ -238,16 +249,19 @@ CellGrid subdivide_box(const geom::NurbsSurface& surface, const Eigen::AlignedBo
 }  // namespace
 
 CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
-                        double tolerance, ErrorMode mode) {
+                        double tolerance, ErrorMode mode, const RevolutionShape* shape) {
     TrimSegments trims;
     trims.tolerance = trims.boundary_tolerance = trims.total_tolerance = tolerance;
+    trims.shape = shape;
     return subdivide_box(surface, box, trims, mode);
 }
 
 CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
                         double tolerance, double boundary_tolerance, double total_tolerance,
-                        const std::vector<TrimPolygon>& loops, ErrorMode mode) {
+                        const std::vector<TrimPolygon>& loops, ErrorMode mode,
+                        const RevolutionShape* shape) {
     TrimSegments trims;
+    trims.shape = shape;
     trims.tolerance = tolerance;
     trims.boundary_tolerance = boundary_tolerance;
     trims.total_tolerance = total_tolerance;

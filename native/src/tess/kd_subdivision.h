@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "geom/nurbs_surface.h"
+#include "tess/revolution_error.h"
 #include "tess/tessellation_options.h"
 #include "tess/trim_polyline.h"
 
@@ -39,7 +40,7 @@ constexpr std::size_t kMaxCells = 4'000'000;
 // Throws geom::InvalidInput for an empty or non-finite box or a tolerance <= 0,
 // geom::NumericalFailure when a bound is not finite or more than kMaxCells are needed.
 CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
-                        double tolerance, ErrorMode mode);
+                        double tolerance, ErrorMode mode, const RevolutionShape* shape = nullptr);
 
 // Trim-aware subdivision. A cell that no segment of `loops` meets (closed cell, with
 // a margin of kTrimMeetMargin of the box) holds only vertices on S: its bound must
@@ -53,10 +54,14 @@ CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedB
 // Cells that no segment meets and that lie outside the loops (even-odd rule, as
 // trim_cells decides) produce no triangles and are not subdivided at all.
 // `loops`: closed polygons in (u,v); orientation does not matter here.
+// With a `shape` (revolution_shape of the surface), cells are bounded by
+// revolution_error instead (its exact distance bound, in both modes); a cell that
+// bound does not cover falls back to bilinear_error.
 constexpr double kTrimMeetMargin = 1e-9;
 CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
                         double tolerance, double boundary_tolerance, double total_tolerance,
-                        const std::vector<TrimPolygon>& loops, ErrorMode mode);
+                        const std::vector<TrimPolygon>& loops, ErrorMode mode,
+                        const RevolutionShape* shape = nullptr);
 
 // The boundary points of every cell (CellGrid::boundary) for cells tiling a box.
 std::vector<std::vector<Eigen::Vector2d>> cell_boundaries(const std::vector<Cell>& cells);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <set>
 
 #include "geom/error.h"
@@ -68,9 +69,11 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     auto start = Clock::now();
     // Cells no trim meets hold only points of S; cells a trim meets also hold the
     // crossings, off S by up to their chord's offset: tessellation_options.h.
+    // Surfaces of revolution with a line or circle meridian get their exact bound.
+    const std::optional<RevolutionShape> shape = revolution_shape(face.surface, face.surface_kind);
     const CellGrid grid =
         kd_subdivision(face.surface, box, interior_tolerance(options), surface_tolerance(options),
-                       options.tolerance, loops, options.mode);
+                       options.tolerance, loops, options.mode, shape ? &*shape : nullptr);
     timings.surface += seconds_since(start);
 
     start = Clock::now();

@@ -29,7 +29,9 @@ struct FaceTimings {
 // point of the mesh lies within interior_tolerance(options) of S at its (u,v) away
 // from the loops, and within options.tolerance in cells the loops cross (the cell's
 // bound plus its crossings' offset from S; tessellation_options.h), for loops whose
-// vertices lie on S.
+// vertices lie on S. On faces revolution_shape recognises (surfaces of revolution with
+// a line or circle meridian) the same shares bound the distance to S instead
+// (revolution_error.h), which is what DESIGN.md guarantees and `trimkit check` measures.
 // Throws geom::InvalidInput for invalid options or non-finite loop points, and
 // geom::NumericalFailure naming the face on degenerate data; never returns NaNs.
 mesh::Mesh tessellate_face(const geom::Face& face, const std::vector<TrimPolygon>& loops,
