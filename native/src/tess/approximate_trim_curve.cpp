@@ -17,8 +17,6 @@ namespace trimkit::tess {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// Most equal pieces one subdivision step cuts a lifted piece into.
-constexpr int kMaxPlannedPieces = 64;
 
 // Homogeneous Bézier control points (w u, w v, w) of c over [t0, t1], one segment.
 std::vector<Eigen::Vector3d> homogeneous_piece(const geom::NurbsCurve2d& c, double t0, double t1) {
@@ -60,94 +58,49 @@ double line_bound(const std::vector<Eigen::Vector4d>& P) {
     return e * q * (1.0 - beta) / (q * (1.0 - beta) + beta);
 }
 
-// Bound F/8 on |S(l(s)) - chord(s)|, the 3D chord's distance from S over the uv
-// chord l: f(s) = S(l(s)) has |f''| <= F = M^uu du^2 + 2 M^uv |du dv| + M^vv dv^2
-// ([Yang] eq. 10 with a linear curve) and the chord interpolates f at s = 0, 1, so
-// |f - chord| <= s (1 - s) F / 2 <= F / 8. The uv chord lies in the hull of the
-// piece's control points, inside the box the M's were taken over.
-double chord_sag_bound(const std::vector<Eigen::Vector3d>& P2, const SurfaceDerivativeBounds& M) {
-    const Eigen::Vector2d d = project(P2.back()) - project(P2.front());
-    const double du = std::abs(d.x()), dv = std::abs(d.y());
-    return (M.Muu * du * du + 2.0 * M.Muv * du * dv + M.Mvv * dv * dv) / 8.0;
-}
-
-// The error of one accepted piece (re-derived; departs from the sum e_line + e_uv
-// of earlier versions, which counts the plane's sagitta twice):
-//  - the 3D chord lies within e_line of the curve S(c) (line_bound);
-//  - the region of S between the uv curve c and the uv chord l is swept by the
-//    segments [c(s), x(s)], x(s) the point of l nearest to c(s) (a homotopy from c
-//    to a path along l with the same ends covers every point the closed curve
-//    c + l winds around), each at most d_uv = max_s dist(c(s), l) long in (u,v);
-//    so a point X of S there lies within e_uv = speed d_uv of S(c(s)), which is
-//    within e_line of the 3D chord, and of S(x(s)), which is within F/8 of it
-//    (chord_sag_bound): X is within e_uv + min(e_line, F/8) of the mesh boundary.
-//    d_uv is bounded as line_bound bounds the 3D distance, on the uv control points
-//    (not |c(s) - l(s)| at equal s, whose tangential part is no distance).
-// So the piece is accepted when max(e_line, e_uv + min(e_line, F/8)) <= budget.
-double piece_error(double e_line, double e_uv, double sag) {
-    return std::max(e_line, e_uv + std::min(e_line, sag));
-}
-
-// line_bound of the uv curve: its homogeneous points (w u, w v, w) as (w u, w v, 0, w).
-double uv_line_bound(const std::vector<Eigen::Vector3d>& P2) {
-    std::vector<Eigen::Vector4d> h(P2.size());
-    for (size_t i = 0; i < P2.size(); ++i) h[i] << P2[i].x(), P2[i].y(), 0.0, P2[i].z();
-    return line_bound(h);
+// Bound on max_s |c(s) - l(s)|, l(s) = b0 + s (bn - b0) the chord at the same s.
+// c - l = N / W with N(s) = sum w_i B_i^n (b_i - b0) - s W(s) (bn - b0), degree n+1:
+// N_k = (k/(n+1)) a_{k-1} + (1 - k/(n+1)) a_k - (k/(n+1)) w_{k-1} (bn - b0),
+// a_i = w_i (b_i - b0) (degree elevation and s B_i^n = (i+1)/(n+1) B_{i+1}^{n+1};
+// re-derived). |c - l| <= max |N_k| / min w_i.
+double chord_parameter_bound(const std::vector<Eigen::Vector3d>& h) {
+    const int n = static_cast<int>(h.size()) - 1;
+    double w_min = kInfinity;
+    for (const auto& x : h) w_min = std::min(w_min, x.z());
+    if (!(w_min > 0.0)) return kInfinity;
+    const Eigen::Vector2d b0 = project(h.front()), d = project(h.back()) - b0;
+    auto a = [&](int i) -> Eigen::Vector2d {
+        if (i < 0 || i > n) return Eigen::Vector2d::Zero();
+        return h[i].head<2>() - h[i].z() * b0;
+    };
+    double e = 0.0;
+    for (int k = 1; k <= n; ++k) {
+        const double r = double(k) / (n + 1);
+        const Eigen::Vector2d N = r * a(k - 1) + (1.0 - r) * a(k) - r * h[k - 1].z() * d;
+        e = std::max(e, N.norm());
+    }
+    return e / w_min;
 }
 
 struct Subdivider {
     double budget;       // γ·tol
     double speed;        // sqrt((M^u)² + (M^v)²) over the piece's region
-    SurfaceDerivativeBounds M;  // over the piece's region
     std::vector<double>* s_out;  // right ends of accepted pieces, in order
-
-    double error(const std::vector<Eigen::Vector4d>& P3, const std::vector<Eigen::Vector3d>& P2) const {
-        return piece_error(line_bound(P3), speed * uv_line_bound(P2), chord_sag_bound(P2, M));
-    }
-
-    // Equal pieces for a piece of error e: k from the 1/k^2 decay of the bound, then
-    // corrected by the largest error of three trial pieces of 1/k (first, middle,
-    // last), because the bound of a long piece overstates its curvature.
-    int planned_pieces(const std::vector<Eigen::Vector4d>& P3, const std::vector<Eigen::Vector3d>& P2,
-                       double e) const {
-        const double first = std::ceil(std::sqrt(e / budget));
-        if (!std::isfinite(first)) return 2;
-        const int k = static_cast<int>(std::clamp(first, 2.0, double(kMaxPlannedPieces)));
-        double e_small = 0.0;
-        for (int i : {0, k / 2, k - 1})
-            e_small = std::max(e_small, error(bezier_piece(P3, double(i) / k, double(i + 1) / k),
-                                              bezier_piece(P2, double(i) / k, double(i + 1) / k)));
-        const double second = std::ceil(k * std::sqrt(e_small / budget));
-        if (!std::isfinite(second)) return k;
-        return static_cast<int>(std::clamp(second, 2.0, double(kMaxPlannedPieces)));
-    }
 
     void run(const std::vector<Eigen::Vector4d>& P3, const std::vector<Eigen::Vector3d>& P2,
              double sa, double sb, int depth) {
-        const double e = error(P3, P2);
+        const double e = line_bound(P3) + speed * chord_parameter_bound(P2);
         if (e <= budget || depth >= kMaxSubdivisionDepth) {
             s_out->push_back(sb);
             return;
         }
-        // k equal pieces (planned_pieces); a piece that still misses the budget is cut
-        // again. Departure from [Balazs] Sec. 5.1's halving, whose power-of-two
-        // counts overshoot by up to 2x.
-        const int k = planned_pieces(P3, P2, e);
-        std::vector<Eigen::Vector4d> rest3 = P3, L3, R3;
-        std::vector<Eigen::Vector3d> rest2 = P2, L2, R2;
-        for (int i = 0; i < k; ++i) {
-            const double s0 = sa + (sb - sa) * i / k, s1 = i + 1 == k ? sb : sa + (sb - sa) * (i + 1) / k;
-            if (i + 1 == k) {
-                run(rest3, rest2, s0, s1, depth + 1);
-                break;
-            }
-            const double t = 1.0 / (k - i);
-            split_bezier(rest3, t, &L3, &R3);
-            split_bezier(rest2, t, &L2, &R2);
-            run(L3, L2, s0, s1, depth + 1);
-            rest3.swap(R3);
-            rest2.swap(R2);
-        }
+        std::vector<Eigen::Vector4d> L3, R3;
+        std::vector<Eigen::Vector3d> L2, R2;
+        split_bezier(P3, 0.5, &L3, &R3);
+        split_bezier(P2, 0.5, &L2, &R2);
+        const double sm = 0.5 * (sa + sb);
+        run(L3, L2, sa, sm, depth + 1);
+        run(R3, R2, sm, sb, depth + 1);
     }
 };
 
@@ -211,7 +164,7 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
             for (const auto& h : P2) box.extend(project(h));
             const SurfaceDerivativeBounds Ms = surface_derivative_bounds(S, box);
             std::vector<double> s_values;
-            Subdivider{budget, std::hypot(Ms.Mu, Ms.Mv), Ms, &s_values}.run(piece.P, P2, 0.0, 1.0, 0);
+            Subdivider{budget, std::hypot(Ms.Mu, Ms.Mv), &s_values}.run(piece.P, P2, 0.0, 1.0, 0);
             append_points(S, c, piece.t0, piece.t1, s_values, &out);
         }
         const geom::NurbsCurve2d::Box box = c.control_box();

@@ -22,18 +22,16 @@ constexpr int kMaxSubdivisionDepth = 40;
 constexpr long kMaxStepsPerPiece = 1L << 20;
 
 // The polyline for c on S, to `tolerance` (> 0) by `method`:
-//  kBezier3d [Balazs] Sec. 4, 5.1: on each lifted piece (lift_trim_curve) subdivision
-//    (de Casteljau, into k equal pieces planned from the 1/k^2 decay of the bound)
-//    until max(e_line, e_uv + min(e_line, F/8)) <= γ·tol, where e_line is the
+//  kBezier3d [Balazs] Sec. 4, 5.1: on each lifted piece (lift_trim_curve) midpoint
+//    subdivision (de Casteljau) until e_line + e_uv <= γ·tol, where e_line is the
 //    largest distance of the (projected) control points from the chord ([Balazs]
 //    Sec. 5.1 without the factor 1 - 2^(2-n), which does not hold for rational or
-//    low-degree pieces: departure), e_uv = sqrt((M^u)² + (M^v)²) times the same
-//    bound on the uv curve's distance from its uv chord ([Yang] eq. 7 with
-//    Cauchy-Schwarz), and F/8 bounds the 3D chord's distance from S over the uv
-//    chord (derived in the .cpp): the 3D chord follows the curve, and the strip of
-//    S between the uv curve and the uv chord stays near the mesh boundary
-//    (departure from [Balazs], which bounds the 3D chord only). Then
-//    simplify_trim_polyline with (1 - γ)·tol.
+//    low-degree pieces: departure) and e_uv = sqrt((M^u)² + (M^v)²)·max|c(s) - l(s)|
+//    bounds the image under S of the uv chord l ([Yang] eq. 7 with Cauchy-Schwarz
+//    in place of M^u + M^v: departure, tighter; |c - l| from the control points of
+//    the numerator of c - l, re-derived), so points the surface grid adds on a
+//    segment stay within tolerance too (departure from [Balazs], which bounds the
+//    3D chord only). Then simplify_trim_polyline with (1 - γ)·tol.
 //    Inexact lifts (d3d > kMaxLiftDegree) use the kYang steps with γ·tol.
 //  kYang [Yang] eq. 9-11: per piece of trim_curve_breaks, dt = sqrt(tol / (M1 + M2)),
 //    M1 = (M^u + M^v) M^tt / 8, M2 = (M^uu (M^t_u)² + 2 M^uv M^t_u M^t_v + M^vv (M^t_v)²) / 8,

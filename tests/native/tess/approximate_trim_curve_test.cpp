@@ -4,8 +4,6 @@
 
 #include <cstdio>
 
-#include "geom/analytic_curves.h"
-#include "geom/analytic_surfaces.h"
 #include "geom/error.h"
 #include "tess/tess_test_cases.h"
 #include "test_support.h"
@@ -104,41 +102,6 @@ TEST(ApproximateTrimCurve, ScaleInvariantPointCount) {
         const TrimPolyline p = approximate_trim_curve(S, tc.curve, 1e-3 * s, TrimMethod::kBezier3d);
         EXPECT_EQ(p.points.size(), n1) << "scale " << s;
     }
-}
-
-// A circle of radius r on a plane: the 3D chord of each segment is its sagitta
-// r (1 - cos(a/2)) off the curve, and the uv lens is the same sagitta, not a second
-// one (approximate_trim_curve.cpp, piece_error). The polyline stays within
-// γ·tol and needs at most 1.5x the fewest segments of that sagitta,
-// n_min = 2 pi / (2 acos(1 - γ tol / r)) (midpoint halving gave up to 2x, and the
-// sum of the two terms another sqrt 2).
-TEST(ApproximateTrimCurve, CircleOnAPlaneSpendsItsBudget) {
-    const geom::NurbsSurface S = geom::plane_patch({0, 1, 0}, {2, 0, 0}, {0, 0, 2}, -4, 4, -4, 4);
-    for (double r : {1.0, 3.0})
-        for (double tol : {1e-2, 1e-3}) {
-            const geom::NurbsCurve2d c = geom::to_2d(
-                geom::circular_arc({0.3, -0.2, 0}, {1, 0, 0}, {0, 1, 0}, r, 0.0, 2 * M_PI));
-            const TrimPolyline poly = approximate_trim_curve(S, c, tol, TrimMethod::kBezier3d);
-            const double budget = kTrimGamma * tol;
-            double worst = 0.0;
-            for (size_t i = 0; i + 1 < poly.points.size(); ++i) {
-                // The chord against the exact curve S(c(t)) on a fine parameter grid.
-                const PolylinePoint &a = poly.points[i], &b = poly.points[i + 1];
-                for (int k = 1; k < 32; ++k) {
-                    const double t = a.t + (b.t - a.t) * k / 32.0;
-                    const Eigen::Vector2d uv = c.evaluate(t);
-                    const Eigen::Vector3d X = S.evaluate(uv.x(), uv.y());
-                    const Eigen::Vector3d ab = b.xyz - a.xyz;
-                    const double l = std::clamp((X - a.xyz).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-                    worst = std::max(worst, (X - a.xyz - l * ab).norm());
-                }
-            }
-            EXPECT_LE(worst, budget) << "r " << r << " tol " << tol;
-            // The plane scales uv by 2: the 3D circle has radius 2 r.
-            const double n_min = 2 * M_PI / (2 * std::acos(1 - budget / (2 * r)));
-            EXPECT_LE(double(poly.points.size() - 1), 1.5 * std::ceil(n_min)) << "r " << r << " tol " << tol;
-            EXPECT_GE(worst, 0.3 * budget) << "r " << r << " tol " << tol;
-        }
 }
 
 TEST(ApproximateTrimCurve, RejectsBadTolerance) {
