@@ -1,0 +1,75 @@
+#include "tess/area_budget.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace trimkit::tess {
+namespace {
+
+// The loss `faces` would lose at `after`, taken as linear in each scale (the model
+// tighten_to_area_budget plans with).
+double predicted_loss(const std::vector<int>& group, const std::vector<FaceArea>& faces, const FaceScales& before,
+                      const FaceScales& after) {
+    double loss = 0.0;
+    for (int f : group)
+        loss += faces[f].trim_loss * after.trim[f] / before.trim[f] + faces[f].cell_loss * after.cell[f] / before.cell[f];
+    return loss;
+}
+
+TEST(AreaBudget, GroupsAreBodiesAndTheFacesInNone) {
+    geom::Model model;
+    model.faces.resize(5);
+    model.bodies.push_back({"a", {0, 2}, true});
+    model.bodies.push_back({"b", {3}, true});
+    const auto groups = area_groups(model);
+    ASSERT_EQ(groups.size(), 3u);
+    EXPECT_EQ(groups[0], (std::vector<int>{0, 2}));
+    EXPECT_EQ(groups[1], (std::vector<int>{3}));
+    EXPECT_EQ(groups[2], (std::vector<int>{1, 4}));
+}
+
+TEST(AreaBudget, PartWithinItsBudgetIsLeftAlone) {
+    const std::vector<std::vector<int>> groups{{0, 1}};
+    // 0.09 % of 1000 lost against a budget of 0.1 %.
+    const std::vector<FaceArea> faces{{600.0, 0.3, 0.3, 100, 20}, {400.0, 0.0, 0.3, 100, 20}};
+    FaceScales scales{{1.0, 1.0}, {1.0, 1.0}};
+    EXPECT_TRUE(tighten_to_area_budget(groups, faces, 1e-3, 0.8, 1.0 / 64, scales).empty());
+    EXPECT_EQ(scales.trim, (std::vector<double>{1.0, 1.0}));
+    EXPECT_EQ(scales.cell, (std::vector<double>{1.0, 1.0}));
+    EXPECT_NEAR(worst_loss_share(groups, faces), 0.9e-3, 1e-15);
+}
+
+TEST(AreaBudget, PartOverBudgetReachesItsTargetAtTheCheapestLevers) {
+    // Part 0 loses 3 of 1000 (0.3 %), part 1 nothing. Face 0's trims lose 1.5 over 10
+    // boundary edges; face 1's cells lose 1.5 over 1000 triangles: per point the
+    // trims lose 100x more, so they fall further.
+    const std::vector<std::vector<int>> groups{{0, 1}, {2}};
+    const std::vector<FaceArea> faces{
+        {500.0, 1.5, 0.0, 200, 10}, {500.0, 0.0, 1.5, 1000, 40}, {100.0, 0.0, 0.0, 50, 10}};
+    const FaceScales before{{1.0, 1.0, 1.0}, {1.0, 1.0, 1.0}};
+    FaceScales after = before;
+    const auto tightened = tighten_to_area_budget(groups, faces, 1e-3, 0.8, 1.0 / 64, after);
+    ASSERT_EQ(tightened, (std::vector<int>{0}));
+    EXPECT_NEAR(predicted_loss(groups[0], faces, before, after), 0.8, 1e-6);
+    EXPECT_LT(after.trim[0], after.cell[1]);
+    EXPECT_EQ(after.cell[0], 1.0);  // no cell loss on face 0: its cells are not touched
+    EXPECT_EQ(after.trim[2], 1.0);
+    EXPECT_EQ(after.cell[2], 1.0);
+    // Face 1's cells tightened: its trims are no coarser than its cells.
+    EXPECT_LE(after.trim[1], after.cell[1]);
+}
+
+TEST(AreaBudget, OneRoundTightensByAtMostItsStep) {
+    // 10 % lost: more than one round can take (cells by 4x at most); the next round
+    // carries on from the scales this one left.
+    const std::vector<std::vector<int>> groups{{0}};
+    const std::vector<FaceArea> faces{{100.0, 0.0, 10.0, 100, 10}};
+    FaceScales scales{{1.0}, {1.0}};
+    ASSERT_EQ(tighten_to_area_budget(groups, faces, 1e-3, 0.8, 1.0 / 64, scales).size(), 1u);
+    EXPECT_DOUBLE_EQ(scales.cell[0], 0.25);
+    EXPECT_DOUBLE_EQ(scales.trim[0], 0.25);
+}
+
+}  // namespace
+}  // namespace trimkit::tess
