@@ -4,6 +4,10 @@
 
 #include <cmath>
 
+#include "geom/analytic_surfaces.h"
+#include "mesh/mesh.h"
+#include "tess/tessellate_model.h"
+
 namespace trimkit::tess {
 namespace {
 
@@ -69,6 +73,47 @@ TEST(AreaBudget, OneRoundTightensByAtMostItsStep) {
     ASSERT_EQ(tighten_to_area_budget(groups, faces, 1e-3, 0.8, 1.0 / 64, scales).size(), 1u);
     EXPECT_DOUBLE_EQ(scales.cell[0], 0.25);
     EXPECT_DOUBLE_EQ(scales.trim[0], 0.25);
+}
+
+// A tube of radius 1 and length 10 as one closed cylinder face (its seam two coedges
+// of the (u,v) rectangle), alone in its body.
+geom::Model tube() {
+    geom::Model model;
+    geom::Face face;
+    face.surface = geom::cylinder_patch({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1.0, 0.0, 2 * M_PI, 0.0, 10.0);
+    face.surface_kind = "cylinder";
+    geom::Loop loop;
+    loop.outer = true;
+    const Eigen::Vector2d corners[4] = {{0, 0}, {2 * M_PI, 0}, {2 * M_PI, 10}, {0, 10}};
+    for (int i = 0; i < 4; ++i) {
+        geom::Coedge c;
+        c.curve = geom::NurbsCurve2d(1, {0, 0, 1, 1}, {corners[i], corners[(i + 1) % 4]});
+        loop.coedges.push_back(c);
+    }
+    face.loops.push_back(loop);
+    model.faces.push_back(face);
+    model.bodies.push_back({"tube", {0}, false});
+    return model;
+}
+
+double ratio_of(const TessellationResult& r) { return mesh::surface_area(r.mesh) / (20.0 * M_PI); }
+
+TEST(AreaBudget, ThinTubeIsMeshedAgainUntilWithinItsBudget) {
+    // At T = 0.05 the end circles' chords (trims at T / 4) span a with
+    // 1 - cos(a/2) = 0.0125, a = 0.32, and the exact cylinder cells up to 0.8 T: a
+    // polygon of such chords loses at least a^2/24 = 0.42 % of the area 20 pi, more than
+    // the 0.15 % budget. The mesh must come back within it.
+    TessellationOptions options;
+    options.tolerance = 0.1;
+    options.threads = 1;
+    const TessellationResult r = tessellate_model(tube(), options);
+    ASSERT_TRUE(r.failed_faces.empty());
+    bool again = false;
+    for (const std::string& w : r.warnings) again = again || w.find("meshed again") != std::string::npos;
+    EXPECT_TRUE(again) << ratio_of(r);
+    const double ratio = mesh::surface_area(r.mesh) / (20.0 * M_PI);
+    EXPECT_GT(ratio, 1.0 - 1.5e-3);
+    EXPECT_LT(ratio, 1.0);
 }
 
 }  // namespace
