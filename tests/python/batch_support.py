@@ -40,6 +40,7 @@ def read_manifest(path):
 
 def mesh_reference(source, output, *args):
     """`trimkit mesh SOURCE -o OUTPUT ARGS --json`: its JSON (triangles, failed faces...)."""
+    pathlib.Path(output).parent.mkdir(parents=True, exist_ok=True)
     result = subprocess.run([TRIMKIT, "mesh", str(source), "-o", str(output), *map(str, args), "--json"],
                             capture_output=True, text=True, timeout=300)
     assert result.returncode == 0, result.stderr
@@ -102,7 +103,7 @@ class DaskCluster:
             name = f"w{k}"
             self.workers[name] = self._start("distributed.cli.dask_worker", "--scheduler-file", self.file,
                                              "--nthreads", "1", "--no-nanny", "--host", "127.0.0.1",
-                                             "--name", name, name=name)
+                                             "--local-directory", self.folder / name, "--name", name, name=name)
         deadline = time.monotonic() + START_SECONDS
         while not self.file.exists():
             assert time.monotonic() < deadline and self.scheduler.poll() is None, self.log("scheduler")
