@@ -47,25 +47,25 @@ def search_path():
     return folders
 
 
-def blend_chunk_task(items, settings, timeout):
-    """Converts [(job, sha256)] to .blend files; returns [(input, Outcome)] in order."""
+def blend_chunk_task(jobs, settings, timeout):
+    """Converts jobs to .blend files; returns [(input, Outcome)] in order."""
     outcomes = {}
-    pending = list(items)
+    pending = list(jobs)
     while pending:
         reported, stopped = run_blender(pending, settings, timeout)
         outcomes.update(reported)
-        pending = [(job, sha) for job, sha in pending if job.input not in outcomes]
+        pending = [job for job in pending if job.input not in outcomes]
         if pending:  # Blender stopped on the first file it did not report
-            job, _ = pending.pop(0)
+            job = pending.pop(0)
             outcomes[job.input] = failed(f"{job.name}: {stopped}")
     address = worker_address()
     for outcome in outcomes.values():
         outcome.worker = address
-    return [(job.input, outcomes[job.input]) for job, _ in items]
+    return [(job.input, outcomes[job.input]) for job in jobs]
 
 
-def run_blender(items, settings, timeout):
-    """One Blender on `items`: ({input: Outcome} reported, why it stopped early or None)."""
+def run_blender(jobs, settings, timeout):
+    """One Blender on `jobs`: ({input: Outcome} reported, why it stopped early or None)."""
     with tempfile.TemporaryDirectory(prefix="trimkit-blend-") as folder:
         folder = pathlib.Path(folder)
         request = folder / "chunk.json"
@@ -73,7 +73,7 @@ def run_blender(items, settings, timeout):
         log = folder / "blender.log"
         request.write_text(json.dumps({
             "path": search_path(), "settings": settings.as_dict(),
-            "jobs": [{"input": job.input, "output": job.output} for job, _ in items]}))
+            "jobs": [{"input": job.input, "output": job.output} for job in jobs]}))
         results.touch()
         command = [blender_binary(), "-b", "--factory-startup", "--python-exit-code", "1",
                    "-P", str(SCRIPT), "--", str(request), str(results)]
@@ -83,7 +83,7 @@ def run_blender(items, settings, timeout):
             except OSError as err:
                 return {}, f"cannot start Blender ({command[0]}): {err}"
         reported, stopped = watch(process, results, timeout)
-        if stopped is None and len(reported) < len(items):
+        if stopped is None and len(reported) < len(jobs):
             stopped = f"Blender exited ({signal_name(process.returncode)}) before this file: {log_tail(log)}"
         return reported, stopped
 

@@ -22,7 +22,6 @@ def main():
     argv = sys.argv[sys.argv.index("--") + 1:]
     request = json.loads(pathlib.Path(argv[0]).read_text())
     sys.path[:0] = request["path"]
-    import bpy  # noqa: F401  (inside Blender)
     from trimkit import batch, importer, mesh_check
     from trimkit_batch import outputs
     from trimkit_batch.outcome import OK, Outcome, failed, failed_face
@@ -31,6 +30,9 @@ def main():
 
     def convert(job):
         start = time.perf_counter()
+        if pathlib.Path(job["input"]).suffix.lower() == ".tbp":
+            return failed(f"{job['input']}: a .tbp solid is not converted to .blend by batch.convert "
+                          "(--format glb, ply, obj or stl polygonizes it)")
         summaries = []
         try:
             size = outputs.write_atomically(job["output"], lambda path: summaries.extend(batch.convert(

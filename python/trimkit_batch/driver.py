@@ -70,9 +70,12 @@ class Run:
                 self.progress.file_done(job, manifest.skipped(old))
             else:
                 todo.append(job)
-        with manifest.Writer(self.manifest_path, first) as self.writer:
+        self.writer = manifest.Writer(self.manifest_path, first)
+        try:
             if todo:
                 self.collect(self.submit(todo))
+        finally:
+            self.writer.close()
         for job in todo:
             outputs.remove_partials(job.output)
         self.progress.finish()
@@ -84,7 +87,7 @@ class Run:
         return "-".join([kind, self.token, str(self.index[job.input]), *map(str, extra)])
 
     def submit_task(self, kind, function, *args, key, priority):
-        future = self.client.submit(function, *args, key=key, priority=priority, pure=False)
+        future = self.client.submit(function, *args, key=key, priority=priority)
         self._pending[future] = kind, args
         return future
 
@@ -113,8 +116,7 @@ class Run:
         futures = []
         for start in range(0, len(by_size), size):
             chunk = by_size[start:start + size]
-            items = [(job, self.sha[job.input]) for job in chunk]
-            futures.append(self.submit_task("blend", blend_chunk_task, items, self.settings, self.timeout,
+            futures.append(self.submit_task("blend", blend_chunk_task, chunk, self.settings, self.timeout,
                                             key=self.key("blend", chunk[0]), priority=priority[chunk[0].input]))
         return futures
 
@@ -143,9 +145,10 @@ class Run:
             except Exception as err:  # the task itself failed: KilledWorker, a cluster error
                 value = failed(f"{type(err).__name__}: {err}")
             if kind == "blend":
+                chunk = args[0]
                 if isinstance(value, Outcome):  # the whole chunk task failed
-                    value = [(j.input, value) for j, _ in args[0]]
-                jobs = {j.input: j for j, _ in args[0]}
+                    value = [(job.input, value) for job in chunk]
+                jobs = {job.input: job for job in chunk}
                 for path, outcome in value:
                     self.record(jobs[path], outcome)
             elif kind == "plan" and isinstance(value, Plan):

@@ -24,8 +24,10 @@ def isolated(function, *args, timeout=None):
     An Outcome gets this worker's address."""
     try:
         result = run_isolated(function, *args, timeout=timeout)
-    except (ConversionTimeout, ChildCrashed) as err:
-        result = failed(err, timeout or 0.0) if isinstance(err, ConversionTimeout) else failed(err)
+    except ConversionTimeout as err:
+        result = failed(err, timeout)
+    except ChildCrashed as err:
+        result = failed(err)
     if isinstance(result, Outcome):
         result.worker = worker_address()
     return result
