@@ -13,8 +13,10 @@ object.trimkit_check does, after the file is saved (the .blend does not get the 
 """
 import dataclasses
 import json
+import os
 import pathlib
 import sys
+import threading
 import time
 
 
@@ -24,6 +26,8 @@ def main():
     sys.path[:0] = request["path"]
     from trimkit import batch, importer, mesh_check
     from trimkit_batch import outputs
+    from trimkit_batch.isolated import exit_with_parent
+    threading.Thread(target=exit_with_parent, args=(os.getppid(),), daemon=True).start()  # a killed worker
     from trimkit_batch.outcome import OK, Outcome, failed, failed_face
 
     settings = request["settings"]

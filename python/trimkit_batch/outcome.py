@@ -4,7 +4,9 @@ status: "ok" (output written), "failed" (no output written; `error` says why) or
 "skipped" (a rerun found the output up to date). failed_faces: [{"face", "reason"}]
 with `face` numbered as `trimkit mesh` numbers them (instances placed). deviation:
 None, or (with --check) the two-sided distances in model units as `trimkit check`
-measures them. Non-finite figures become None (the manifest is strict JSON).
+measures them. seconds: the conversion's own time on its worker, not the wait in the
+queue (with --split parts the parts' times and the assembly's, summed). Non-finite
+figures become None (the manifest is strict JSON).
 """
 import dataclasses
 import math
