@@ -45,7 +45,8 @@ def convert_all(client, jobs_of, settings):
     with tempfile.TemporaryDirectory(prefix="trimkit-bench-") as out, open(os.devnull, "w") as quiet:
         jobs = jobs_of(out)
         start = time.perf_counter()
-        lines = Run(client, jobs, settings, os.path.join(out, "manifest.jsonl"), progress=Progress(len(jobs), quiet)).run()
+        lines = Run(lambda: client, jobs, settings, os.path.join(out, "manifest.jsonl"),
+                    progress=Progress(len(jobs), quiet)).run()
         wall = time.perf_counter() - start
     work = sum(line["seconds"] or 0.0 for line in lines)
     return wall, work, lines

@@ -11,6 +11,7 @@ every input was converted or skipped, 1 when any failed (its manifest line says 
 2 for a bad command line (nothing converted).
 """
 import argparse
+import contextlib
 import logging
 import os
 import sys
@@ -108,6 +109,25 @@ def check_workers(client):
                            "PYTHONPATH=<trimkit>/build/python (README: trimkit-batch)") from None
 
 
+def open_cluster(args, stack, inputs_count):
+    """The Client of --scheduler or of a new local cluster (closed by `stack`), its
+    address and dashboard printed, its workers able to import trimkit."""
+    try:
+        client, cluster = connect(args)
+    except OSError as err:
+        raise RuntimeError(f"cannot reach the scheduler {args.scheduler}: {err}") from None
+    if cluster is not None:
+        stack.callback(cluster.close)
+    stack.callback(client.close)  # first: callbacks run last in, first out
+    print(f"trimkit-batch: {inputs_count} inputs, scheduler {client.scheduler.address}", file=sys.stderr)
+    print(dashboard_line(client), file=sys.stderr)
+    if args.scheduler and not client.scheduler_info()["workers"]:
+        print(f"trimkit-batch: waiting for a worker (dask worker {args.scheduler})", file=sys.stderr)
+        client.wait_for_workers(1)
+    check_workers(client)
+    return client
+
+
 def main(argv=None):
     args = parser().parse_args(argv)
     try:
@@ -121,18 +141,9 @@ def main(argv=None):
 
     from .driver import Run, failures
     try:
-        client, cluster = connect(args)
-    except OSError as err:
-        print(f"trimkit-batch: cannot reach the scheduler {args.scheduler}: {err}", file=sys.stderr)
-        return EXIT_USAGE
-    try:
-        print(f"trimkit-batch: {len(jobs)} inputs, scheduler {client.scheduler.address}", file=sys.stderr)
-        print(dashboard_line(client), file=sys.stderr)
-        if args.scheduler and not client.scheduler_info()["workers"]:
-            print("trimkit-batch: waiting for a worker (dask worker " + args.scheduler + ")", file=sys.stderr)
-            client.wait_for_workers(1)
-        check_workers(client)
-        lines = Run(client, jobs, settings, manifest_path, timeout=args.timeout, chunk=args.chunk).run()
+        with contextlib.ExitStack() as stack:
+            lines = Run(lambda: open_cluster(args, stack, len(jobs)), jobs, settings, manifest_path,
+                        timeout=args.timeout, chunk=args.chunk).run()
     except RuntimeError as err:
         print(f"trimkit-batch: {err}", file=sys.stderr)
         return EXIT_FAILED
@@ -140,12 +151,7 @@ def main(argv=None):
         print(f"\ntrimkit-batch: interrupted; {manifest_path} holds what finished, rerun to resume",
               file=sys.stderr)
         return 130
-    finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
-    bad = failures(lines)
     counts = {status: sum(line["status"] == status for line in lines) for status in ("ok", "skipped", "failed")}
     print(f"trimkit-batch: {counts['ok']} converted, {counts['skipped']} skipped, {counts['failed']} failed; "
           f"manifest {manifest_path}", file=sys.stderr)
-    return EXIT_FAILED if bad else 0
+    return EXIT_FAILED if failures(lines) else 0

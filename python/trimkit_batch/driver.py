@@ -41,10 +41,13 @@ def blend_chunk_size(count, workers):
 
 
 class Run:
-    """One batch run on a connected Client. `run()` returns the manifest lines written."""
+    """One batch run. `open_client()` gives the Dask Client, called only when something
+    is left to convert (a rerun that skips everything starts no cluster). `run()` returns
+    the manifest lines written, one per job."""
 
-    def __init__(self, client, jobs, settings, manifest_path, timeout=None, chunk=None, progress=None):
-        self.client = client
+    def __init__(self, open_client, jobs, settings, manifest_path, timeout=None, chunk=None, progress=None):
+        self.open_client = open_client
+        self.client = None
         self.jobs = jobs
         self.settings = settings
         self.manifest_path = manifest_path
@@ -73,6 +76,7 @@ class Run:
         self.writer = manifest.Writer(self.manifest_path, first)
         try:
             if todo:
+                self.client = self.open_client()
                 self.collect(self.submit(todo))
         finally:
             self.writer.close()

@@ -24,7 +24,8 @@ class Progress:
         self.done += 1
         if outcome.status == FAILED:
             self.failed += 1
-            self._print(f"trimkit-batch: {job.input}: {outcome.error}")
+            error = outcome.error or "failed"
+            self._print(f"trimkit-batch: {error if error.startswith(job.input) else job.input + ': ' + error}")
         elif outcome.status == SKIPPED:
             self.skipped += 1
         self.show()

@@ -96,6 +96,7 @@ def test_killed_worker_loses_nothing_and_a_rerun_skips_everything(tmp_path):
         again = run_batch(tmp_path / "in", "--out", out, "--scheduler", cluster.address, *tolerance)
         assert again.returncode == 0, again.stderr
         assert "0 converted, 20 skipped, 0 failed" in again.stderr
+        assert "scheduler tcp://" not in again.stderr  # nothing to convert: no cluster contacted
         second = read_manifest(manifest)
         assert len(second) == INPUTS and all(line["status"] == "skipped" for line in second)
         assert {line["input"]: line["triangles"] for line in second} == {l["input"]: l["triangles"] for l in lines}
@@ -116,8 +117,8 @@ def test_damaged_input_fails_alone_with_its_reason(tmp_path):
     assert sorted(lines) == sorted([p.name for p in good] + ["damaged.igs", "cube.tbp"])
     bad = lines["damaged.igs"]
     assert bad["status"] == "failed" and bad["output_bytes"] is None
-    assert "damaged.igs" in bad["error"], bad
-    assert f"{damaged}: " in run.stderr  # one line per failure: trimkit-batch: FILE: reason
+    assert bad["error"].startswith(f"{damaged}:") and "file truncated" in bad["error"], bad  # the reader's FILE:LINE: reason
+    assert f"trimkit-batch: {bad['error']}\n" in run.stderr  # and a line of its own on the terminal
     assert not (out / "damaged.ply").exists()
     for path in good:
         line = lines[path.name]
