@@ -7,8 +7,8 @@ CHUNK.json: {"path": [folders for sys.path], "settings": Settings.as_dict(),
 its own .blend (an empty scene each), written under a temporary name and renamed.
 RESULTS.jsonl gets "ready" once the add-on is loaded, then one Outcome (with "input")
 per file as it finishes, flushed, so that the worker sees progress and, if Blender dies,
-which file it died on. Failed faces are numbered as the model's faces (Blender keeps
-instances as linked duplicates). With --check each object's mesh is measured as
+which file it died on. Blender keeps instances as linked duplicates: triangles count
+each mesh once, and failed faces are numbered as the model's faces. With --check each object's mesh is measured as
 object.trimkit_check does, after the file is saved (the .blend does not get the colours).
 """
 import dataclasses
