@@ -80,10 +80,13 @@ def main():
         walls[workers] = [wall for wall, _, _ in runs]
         lines = runs[-1][2]
         ok = sum(line["status"] == "ok" for line in lines)
+        work = statistics.median(work for _, work, _ in runs)
+        busy = work / workers / statistics.median(walls[workers])
+        longest = max(line["seconds"] or 0.0 for line in lines)
         print(f"{workers} worker(s): cluster start {started:.1f} s; {len(lines)} files ({ok} ok, "
               f"{len(lines) - ok} failed); wall {', '.join(f'{w:.2f}' for w in walls[workers])} s "
-              f"(median {statistics.median(walls[workers]):.2f} s); summed task seconds "
-              f"{statistics.median(work for _, work, _ in runs):.2f} s")
+              f"(median {statistics.median(walls[workers]):.2f} s); summed task seconds {work:.2f} s "
+              f"(workers busy {100 * busy:.0f} % of the wall time; longest file {longest:.2f} s)")
         if workers == 2:
             client.submit(noop, 0, pure=False).result()  # warm
             start = time.perf_counter()
