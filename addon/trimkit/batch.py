@@ -43,7 +43,8 @@ def convert(inputs, output, tolerance, relative=False, angle=30.0, mode="guarant
     """Converts CAD files to one output (.blend, .glb or .obj).
 
     tolerance: in the files' units, or a fraction of each model's diagonal when
-    `relative`; angle in degrees. Returns one summary dict per input; raises
+    `relative`; angle in degrees. Returns one summary dict per input (failed_faces:
+    how many; failed_face_reasons: [(model face id, reason)]); raises
     RuntimeError/ValueError naming the file on the first failure, before the
     output is written.
     """
@@ -78,8 +79,8 @@ def convert(inputs, output, tolerance, relative=False, angle=30.0, mode="guarant
         except (RuntimeError, ValueError, OSError) as err:
             raise type(err)(f"{path}: {err}") from err
         summary = dict(file=str(path), objects=count, faces=result.faces, triangles=result.triangles,
-                       failed_faces=len(result.failed_faces), tolerance=result.tolerance,
-                       seconds=result.seconds)
+                       failed_faces=len(result.failed_faces), failed_face_reasons=list(result.failed_faces),
+                       tolerance=result.tolerance, seconds=result.seconds)
         summaries.append(summary)
         if report:
             report(f"{pathlib.Path(path).name}: {count} objects, {result.triangles} triangles, "

@@ -1,9 +1,12 @@
-// Bindings for native/src/geom: the data model read-only, and surface evaluation
-// on parameter arrays.
+// Bindings for native/src/geom: the data model read-only, surface evaluation on
+// parameter arrays, and the two model-to-model functions (placing instances,
+// picking faces) a caller needs to mesh an assembly part by part.
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include "geom/flatten_instances.h"
 #include "geom/model.h"
+#include "geom/select_faces.h"
 #include "numpy_convert.h"
 
 namespace trimkit::bindings {
@@ -80,6 +83,14 @@ void bind_geom(py::module_& m) {
         .def_readonly("instances", &geom::Model::instances)
         .def_readonly("colors", &geom::Model::colors)
         .def_readonly("warnings", &geom::Model::warnings);
+
+    m.def("flatten_instances", &geom::flatten_instances, py::arg("model"), py::call_guard<py::gil_scoped_release>(),
+          "The model with every instance's body copied into place (what `trimkit mesh` meshes): faces in no "
+          "instanced body first, then each instance's copy; unchanged without instances.");
+    m.def("select_faces", &geom::select_faces, py::arg("model"), py::arg("faces"),
+          py::call_guard<py::gil_scoped_release>(),
+          "A model of the listed faces only, in that order, all free (bodies and instances dropped; edges keep "
+          "their indices). ValueError for an index out of range or repeated.");
 }
 
 }  // namespace trimkit::bindings

@@ -54,3 +54,34 @@ def write_stray_hole_plate(path, instances=()):
     path = pathlib.Path(path)
     path.write_text(w.text(path.name))
     return str(path)
+
+
+def write_bracket_assembly(path, instances):
+    """samples/bracket.igs's two faces (the plate with a hole, the quarter cylinder) as one
+    308 subfigure, placed by a 408 per (x, y, z, scale) in `instances`: one body, a
+    Model.Instance each."""
+    m = iges_writer()
+    w = m.IgesWriter()
+    plate = [1, 1, 1, 1, 0, 0, 1, 0, 0, 0, 0, 100, 100, 0, 0, 60, 60, 1.0, 1.0, 1.0, 1.0,
+             0.0, 0.0, 0.0, 100.0, 0.0, 0.0, 0.0, 60.0, 0.0, 100.0, 60.0, 0.0,
+             0.0, 100.0, 0.0, 60.0]
+    surf = w.add(128, plate, status="00010000")
+    pts, wts, knots = m.circle_nurbs(30.0, 30.0, 10.0)
+    pts, wts = pts[::-1], wts[::-1]  # a hole: clockwise in (u, v)
+    pcurve = w.add(126, m.curve126(pts, wts, knots, 2), status="00010500")
+    mcurve = w.add(126, m.curve126(pts, wts, knots, 2), status="00010000")
+    loop = w.add(142, [1, surf, pcurve, mcurve, 1], status="00010000")
+    faces = [w.add(144, [surf, 0, 1, 0, loop], status="00010000")]
+    s = math.sqrt(0.5)
+    cyl = [2, 1, 2, 1, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 0, 0, 40, 40, 1.0, s, 1.0, 1.0, s, 1.0]
+    for z in (0.0, 40.0):
+        for x, y in ((120.0, 60.0), (120.0, 80.0), (100.0, 80.0)):
+            cyl += [x, y, z]
+    cyl += [0.0, 1.0, 0.0, 40.0]
+    faces.append(w.add(128, cyl, status="00010000"))
+    definition = w.add(308, [0, "BRACKET", len(faces), *faces], status="00000200")
+    for x, y, z, scale in instances:
+        w.add(408, [definition, float(x), float(y), float(z), float(scale)])
+    path = pathlib.Path(path)
+    path.write_text(w.text(path.name))
+    return str(path)
