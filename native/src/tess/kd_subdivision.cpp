@@ -210,8 +210,10 @@ CellGrid subdivide_box(const geom::NurbsSurface& surface, const Eigen::AlignedBo
         if (!(t > 0.0) || !std::isfinite(t))
             throw geom::InvalidInput("kd_subdivision: tolerance = " + format_value(t) +
                                      "; expected a finite value > 0");
-    const auto [du0, du1] = surface.domain_u();
-    const auto [dv0, dv1] = surface.domain_v();
+    // Named, not structured bindings: `stretch` captures them (C++17 forbids capturing
+    // structured bindings; clang 14, the fuzz build's compiler, enforces it).
+    const std::pair<double, double> domain_u = surface.domain_u(), domain_v = surface.domain_v();
+    const double du0 = domain_u.first, du1 = domain_u.second, dv0 = domain_v.first, dv1 = domain_v.second;
     const double bu0 = box.min().x(), bu1 = box.max().x(), bv0 = box.min().y(), bv1 = box.max().y();
     const double min_du = kMinRelativeWidth * (bu1 - bu0);
     const double min_dv = kMinRelativeWidth * (bv1 - bv0);
