@@ -2,9 +2,7 @@
 import json
 import subprocess
 
-from conftest import ROOT
-
-TRIMKIT = str(ROOT / "build" / "bin" / "trimkit")
+from conftest import TRIMKIT
 
 
 def run(*args):

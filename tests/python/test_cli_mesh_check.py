@@ -3,29 +3,14 @@ end to end through the command line, in every output format; and a face the mesh
 cannot mesh correctly (a file written here) reported on stderr, in the JSON with its
 figures, and as exit status 3 with --strict."""
 import json
-import pathlib
 import subprocess
 
 import pytest
 
-from conftest import ROOT
+from conftest import TRIMKIT
 from iges_samples import STRAY_HOLE_AREA, write_stray_hole_plate
 
 
-def trimkit_program():
-    """The `trimkit` of the build whose _trimkit module is on the path (PYTHONPATH=BUILD/python),
-    else build/bin/trimkit."""
-    try:
-        import _trimkit
-        beside = pathlib.Path(_trimkit.__file__).resolve().parents[1] / "bin" / "trimkit"
-        if beside.exists():
-            return str(beside)
-    except ImportError:
-        pass
-    return str(ROOT / "build" / "bin" / "trimkit")
-
-
-TRIMKIT = trimkit_program()
 # Exact areas of samples/bracket.igs: a 100 x 60 plate with a radius-10 hole, and a
 # quarter cylinder of radius 20 and height 40.
 PLATE_AREA = 100.0 * 60.0 - 3.141592653589793 * 10.0 ** 2

@@ -6,9 +6,7 @@ import subprocess
 
 import pytest
 
-from conftest import ROOT
-
-TRIMKIT = str(ROOT / "build" / "bin" / "trimkit")
+from conftest import TRIMKIT
 
 
 def run(*args):

@@ -107,8 +107,9 @@ private:
 
 }  // namespace
 
-mesh::Mesh read_glb(const std::string& path) {
-    const std::string bytes = read_file_bytes(path);
+mesh::Mesh read_glb(const std::string& path) { return parse_glb(read_file_bytes(path), path); }
+
+mesh::Mesh parse_glb(const std::string& bytes, const std::string& path) {
     ByteCursor in(bytes, 0, bytes.size(), path);
     if (in.u32("the glb magic") != kGlbMagic) throw geom::ReadError(path, 0, "not a glb file (bad magic)");
     const std::uint32_t version = in.u32("the glb version");

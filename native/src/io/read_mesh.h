@@ -27,4 +27,11 @@ mesh::Mesh read_obj(const std::string& path);
 mesh::Mesh read_stl(const std::string& path);
 mesh::Mesh read_glb(const std::string& path);
 
+// The same for file contents already in memory (the fuzz harnesses, tests);
+// `file` names the input in errors.
+mesh::Mesh parse_ply(const std::string& bytes, const std::string& file);
+mesh::Mesh parse_obj(const std::string& bytes, const std::string& file);
+mesh::Mesh parse_stl(const std::string& bytes, const std::string& file);
+mesh::Mesh parse_glb(const std::string& bytes, const std::string& file);
+
 }  // namespace trimkit::io

@@ -68,8 +68,9 @@ std::int64_t resolve(const std::string& text, std::size_t count, const char* wha
 
 }  // namespace
 
-mesh::Mesh read_obj(const std::string& path) {
-    const std::string bytes = read_file_bytes(path);
+mesh::Mesh read_obj(const std::string& path) { return parse_obj(read_file_bytes(path), path); }
+
+mesh::Mesh parse_obj(const std::string& bytes, const std::string& path) {
     std::vector<Eigen::Vector3d> v, vn;
     std::vector<Eigen::Vector2d> vt;
     std::vector<std::array<Corner, 3>> triangles;

@@ -104,8 +104,9 @@ private:
 
 }  // namespace
 
-mesh::Mesh read_ply(const std::string& path) {
-    const std::string bytes = read_file_bytes(path);
+mesh::Mesh read_ply(const std::string& path) { return parse_ply(read_file_bytes(path), path); }
+
+mesh::Mesh parse_ply(const std::string& bytes, const std::string& path) {
     if (bytes.compare(0, 4, "ply\n") != 0 && bytes.compare(0, 5, "ply\r\n") != 0)
         throw geom::ReadError(path, 1, "not a PLY file (no 'ply' magic line)");
     const std::size_t header_end = bytes.find("end_header");

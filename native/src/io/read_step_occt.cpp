@@ -204,10 +204,30 @@ void check_step_header(const std::string& path) {
         throw geom::ReadError(path, 1, "not a STEP file (it does not start with 'ISO-10303-21;')");
 }
 
+// The XCAF document of one read. NewDocument registers it with the application,
+// which keeps every document it made until Close: without this, each STEP read
+// left its whole document (every shape) allocated for the life of the process.
+class ScratchDocument {
+public:
+    ScratchDocument() { XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc_); }
+    ~ScratchDocument() {
+        try {
+            if (!doc_.IsNull() && doc_->IsOpened()) XCAFApp_Application::GetApplication()->Close(doc_);
+        } catch (...) {  // Standard_Failure from a damaged document: nothing more to free
+        }
+    }
+    ScratchDocument(const ScratchDocument&) = delete;
+    ScratchDocument& operator=(const ScratchDocument&) = delete;
+    Handle(TDocStd_Document)& get() { return doc_; }
+
+private:
+    Handle(TDocStd_Document) doc_;
+};
+
 geom::Model read_step_unguarded(const std::string& path) {
     check_step_header(path);
-    Handle(TDocStd_Document) doc;
-    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+    ScratchDocument scratch;
+    Handle(TDocStd_Document)& doc = scratch.get();
     STEPCAFControl_Reader reader;
     reader.SetColorMode(true);
     reader.SetNameMode(true);

@@ -105,8 +105,9 @@ void read_ascii(const std::string& bytes, const std::string& path, mesh::Mesh& m
 
 }  // namespace
 
-mesh::Mesh read_stl(const std::string& path) {
-    const std::string bytes = read_file_bytes(path);
+mesh::Mesh read_stl(const std::string& path) { return parse_stl(read_file_bytes(path), path); }
+
+mesh::Mesh parse_stl(const std::string& bytes, const std::string& path) {
     mesh::Mesh mesh;
     bool binary = true;
     if (bytes.size() >= 84) {

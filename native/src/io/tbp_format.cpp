@@ -10,6 +10,7 @@
 #include "geom/error.h"
 #include "io/json_value.h"
 #include "io/json_writer.h"
+#include "io/output_file.h"
 
 namespace trimkit::io {
 namespace {
@@ -123,10 +124,9 @@ std::string tbp_text(const tbp::TbpSolid& solid) {
 
 void write_tbp(const tbp::TbpSolid& solid, const std::string& path) {
     const std::string text = tbp_text(solid);
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    out << text;
-    if (!out.flush()) throw std::runtime_error(path + ": write failed");
+    OutputFile out(path);
+    out.write(text);
+    out.commit();
 }
 
 }  // namespace trimkit::io

@@ -5,6 +5,7 @@
 
 #include "geom/error.h"
 #include "io/json_writer.h"
+#include "io/output_file.h"
 #include "io/write_support.h"
 
 namespace trimkit::io {
@@ -129,9 +130,9 @@ void write_glb(const std::string& path, const mesh::Mesh& mesh) {
         put_u32(bytes, kChunkBin);
         bytes += bin;
     }
-    std::ofstream out = open_output(path);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    close_output(out, path);
+    OutputFile out(path);
+    out.write(bytes);
+    out.commit();
 }
 
 }  // namespace trimkit::io

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "geom/error.h"
+#include "io/output_file.h"
 #include "io/write_support.h"
 
 namespace trimkit::io {
@@ -26,9 +27,9 @@ void write_mtl(const std::string& path, const std::map<std::string, std::array<f
         std::snprintf(kd, sizeof kd, "Kd %.6g %.6g %.6g\n", rgb[0], rgb[1], rgb[2]);
         text += "\nnewmtl " + name + "\n" + kd;
     }
-    std::ofstream out = open_output(path);
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    close_output(out, path);
+    OutputFile out(path);
+    out.write(text);
+    out.commit();
 }
 
 }  // namespace
@@ -43,12 +44,12 @@ void write_obj(const std::string& path, const mesh::Mesh& mesh, const ObjOptions
     const bool materials = options.materials && mesh.has_face_ids() && !mesh.face_colors.empty();
     const std::filesystem::path mtl_path = std::filesystem::path(path).replace_extension(".mtl");
 
-    std::ofstream out = open_output(path);
+    OutputFile out(path);
     std::string text;
     text.reserve(1 << 20);
     const auto flush_text = [&](bool force) {
         if (force || text.size() >= (1u << 20)) {
-            out.write(text.data(), static_cast<std::streamsize>(text.size()));
+            out.write(text);
             text.clear();
         }
     };
@@ -95,7 +96,7 @@ void write_obj(const std::string& path, const mesh::Mesh& mesh, const ObjOptions
         flush_text(false);
     }
     flush_text(true);
-    close_output(out, path);
+    out.commit();
     if (materials) write_mtl(mtl_path.string(), used_colors);
 }
 

@@ -1,5 +1,6 @@
 #include "io/write_ply.h"
 
+#include "io/output_file.h"
 #include "io/write_support.h"
 
 namespace trimkit::io {
@@ -34,9 +35,9 @@ void write_ply(const std::string& path, const mesh::Mesh& mesh) {
         if (mesh.has_face_ids()) put_i32(bytes, mesh.face_ids[t]);
     }
 
-    std::ofstream out = open_output(path);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    close_output(out, path);
+    OutputFile out(path);
+    out.write(bytes);
+    out.commit();
 }
 
 }  // namespace trimkit::io

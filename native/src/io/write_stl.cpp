@@ -2,6 +2,7 @@
 
 #include <initializer_list>
 
+#include "io/output_file.h"
 #include "io/write_support.h"
 
 namespace trimkit::io {
@@ -23,9 +24,9 @@ void write_stl(const std::string& path, const mesh::Mesh& mesh) {
             for (int k = 0; k < 3; ++k) put_f32(bytes, static_cast<float>((*v)[k]));
         put_u16(bytes, 0);
     }
-    std::ofstream out = open_output(path);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    close_output(out, path);
+    OutputFile out(path);
+    out.write(bytes);
+    out.commit();
 }
 
 }  // namespace trimkit::io

@@ -1,6 +1,5 @@
 #include "io/write_support.h"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -25,25 +24,7 @@ void check_fits(const std::vector<Vector>& values, const char* array, const std:
     }
 }
 
-std::string reason() { return errno != 0 ? std::strerror(errno) : "unknown error"; }
-
 }  // namespace
-
-std::ofstream open_output(const std::string& path) {
-    errno = 0;
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (!out.is_open())
-        throw std::runtime_error(path + ": cannot open for writing (" + reason() + ")");
-    return out;
-}
-
-void close_output(std::ofstream& out, const std::string& path) {
-    errno = 0;
-    out.flush();
-    const bool ok = out.good();
-    out.close();
-    if (!ok || out.fail()) throw std::runtime_error(path + ": write failed (" + reason() + ")");
-}
 
 void check_float_mesh(const mesh::Mesh& mesh, const std::string& writer) {
     try {

@@ -1,23 +1,14 @@
 // Shared plumbing of the mesh writers (write_obj, write_ply, write_stl,
-// write_glb): opening and closing output files with errors that name the path,
-// checks that a mesh fits the float32 formats, and little-endian encoding.
+// write_glb): checks that a mesh fits the float32 formats, and little-endian
+// encoding. The files themselves are written through io/output_file.h.
 #pragma once
 
 #include <cstdint>
-#include <fstream>
 #include <string>
 
 #include "mesh/mesh.h"
 
 namespace trimkit::io {
-
-// `path` opened for binary writing (truncated); throws std::runtime_error
-// "PATH: cannot open for writing (REASON)" when it cannot be created.
-std::ofstream open_output(const std::string& path);
-
-// Flushes and closes `out`; throws std::runtime_error "PATH: write failed
-// (REASON)" if any write to it failed (a full disk, an I/O error).
-void close_output(std::ofstream& out, const std::string& path);
 
 // Validates `mesh` (mesh::validate) and checks that every position, normal and
 // uv fits a float32 (|x| <= FLT_MAX); throws geom::InvalidInput prefixed with

@@ -57,8 +57,9 @@ TbpSolid pn_triangles(const mesh::Mesh& input) {
             bool used = false;
             for (const auto& t : m.triangles) used |= t[0] == int(v) || t[1] == int(v) || t[2] == int(v);
             if (used)
-                throw geom::NumericalFailure("pn_triangles: vertex " + std::to_string(v) +
-                                             " has no normal (its triangles cancel or are degenerate)");
+                // Bad input, not our failure: the mesh folds back on itself at v.
+                throw geom::InvalidInput("pn_triangles: vertex " + std::to_string(v) +
+                                         " has no normal (its triangles cancel or are degenerate)");
             continue;
         }
         N[v].normalize();

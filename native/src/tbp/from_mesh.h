@@ -13,8 +13,9 @@
 namespace trimkit::tbp {
 
 // Cubic PN-triangle solid of `mesh` (welded first at 1e-9 of its box diagonal).
-// Throws InvalidInput for an invalid mesh or one without triangles, and
-// NumericalFailure naming the vertex where no normal can be formed.
+// Throws InvalidInput for an invalid mesh, one without triangles, or one with a
+// vertex where no normal can be formed (its triangles cancel: bad input, named
+// by the vertex index in the welded mesh).
 TbpSolid pn_triangles(const mesh::Mesh& mesh);
 
 struct LoopConversion {

@@ -94,7 +94,13 @@ mesh::Mesh polygonize(const TbpSolid& solid, const PolygonizeOptions& options) {
     mesh::Mesh out;
     Eigen::AlignedBox3d box;
     for (std::size_t p = 0; p < solid.patches.size(); ++p) {
-        mesh::append(out, polygonize_patch(solid.patches[p], rate, static_cast<int>(p)));
+        try {
+            mesh::append(out, polygonize_patch(solid.patches[p], rate, static_cast<int>(p)));
+        } catch (const geom::NumericalFailure& e) {
+            // No normal even a little way inside (BezierTriangle::normal): the patch
+            // has no area there, a defect of the solid, so bad input naming the patch.
+            throw geom::InvalidInput("polygonize: patch " + std::to_string(p) + " is degenerate: " + e.what());
+        }
         box.extend(solid.patches[p].bounding_box());
     }
     if (options.weld) {

@@ -52,7 +52,8 @@ DomainPattern triangle_pattern(int rate);
 mesh::Mesh polygonize_patch(const TbpPatch& patch, int rate, int face_id = 0);
 
 // Mesh of a solid: every patch at the same rate, face id = patch index, welded
-// unless options.weld is false. Validates the solid (InvalidInput).
+// unless options.weld is false. Validates the solid; a patch with no normal even
+// near a point of the pattern (no area there) is InvalidInput naming the patch.
 mesh::Mesh polygonize(const TbpSolid& solid, const PolygonizeOptions& options);
 
 }  // namespace trimkit::tbp

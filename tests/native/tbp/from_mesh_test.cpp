@@ -50,6 +50,21 @@ TEST(PnTriangles, FlatMeshGivesFlatPatches) {
     EXPECT_THROW(pn_triangles(mesh::Mesh{}), geom::InvalidInput);
 }
 
+// tests/fuzz/regressions/obj/cancelling_triangles.obj: a triangle and its reverse
+// share every vertex, so no vertex has a normal. That is bad input (exit 2 in the
+// CLI), not an internal failure.
+TEST(PnTriangles, TrianglesThatCancelAreInvalidInputNamingTheVertex) {
+    mesh::Mesh m;
+    m.positions = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    m.triangles = {{0, 2, 1}, {0, 1, 2}};
+    try {
+        pn_triangles(m);
+        ADD_FAILURE() << "no error for cancelling triangles";
+    } catch (const geom::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("pn_triangles: vertex 0 has no normal"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace trimkit::tbp
 

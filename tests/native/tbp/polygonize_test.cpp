@@ -70,5 +70,22 @@ TEST(Polygonize, NormalsAndUvsComeFromThePatch) {
     EXPECT_EQ(m.face_ids.front(), 7);
 }
 
+// tests/fuzz/regressions/tbp/collapsed_patch.tbp: a patch whose corners lie on one
+// line has no normal anywhere; polygonize reports it as bad input naming the patch.
+TEST(Polygonize, PatchWithoutAreaIsInvalidInputNamingThePatch) {
+    TbpSolid solid;
+    solid.patches.push_back(test::flat_patch({0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
+    solid.patches.push_back(test::flat_patch({0, 0, 0}, {0, 1, 0}, {0, 1, 0}));
+    PolygonizeOptions options;
+    options.level = 1;
+    options.lod = 1;
+    try {
+        polygonize(solid, options);
+        ADD_FAILURE() << "no error for a patch without area";
+    } catch (const geom::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("polygonize: patch 1 is degenerate"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace trimkit::tbp
