@@ -23,6 +23,19 @@ KEEP_ITEMS = [
     ('outside', "Outside", "Keep the part of the patches outside the tool solid"),
     ('inside', "Inside", "Keep the part of the patches inside the tool solid"),
 ]
+UNIT_ITEMS = [
+    ('FILE', "File", "The length unit the file declares"),
+    ('MM', "Millimetres", "The file's numbers are millimetres"),
+    ('CM', "Centimetres", "The file's numbers are centimetres"),
+    ('M', "Metres", "The file's numbers are metres"),
+    ('INCH', "Inches", "The file's numbers are inches"),
+]
+UNIT_METRES = {'MM': 0.001, 'CM': 0.01, 'M': 1.0, 'INCH': 0.0254}
+UV_ITEMS = [
+    ('REAL', "Real-World Scale", "1 UV unit = 1 metre of surface (measured on the exact surface), "
+                                 "one island per CAD face, packed without overlap"),
+    ('FACE', "Per Face 0-1", "Each CAD face's surface parameters stretched to 0-1 (islands overlap)"),
+]
 PART_ITEMS = [
     ('MODEL', "Model", "All faces (or the faces in no body)"),
     ('BODY', "Body", "One body"),
@@ -72,12 +85,24 @@ class TRIMKIT_PG_object(bpy.types.PropertyGroup):
     exact_normals: BoolProperty(name="Exact Normals", default=True,
                                 description="Custom split normals from the exact surface (slow above ~500k triangles)")
 
+    units: EnumProperty(name="Units", items=UNIT_ITEMS, default='FILE',
+                        description="What the file's numbers are (the scale follows)")
+    uv_mode: EnumProperty(name="UVs", items=UV_ITEMS, default='REAL')
+    uv_layout: StringProperty(name="UV Layout", description="Each CAD face's UV mapping and place (JSON), "
+                                                          "kept so that re-meshing keeps the UVs where they were")
+    lod_level: IntProperty(name="LOD Level", default=-1, description="Level in an LOD chain; -1: not an LOD")
+    lod_source: StringProperty(name="LOD Of", description="The object an LOD chain was made from")
+    lod_report: StringProperty(name="LODs", description="Triangles and tolerance of each level made from this object")
+    import_report: StringProperty(name="Import", description="File unit, size and warnings at import")
+
     faces: IntProperty(name="Faces", description="CAD faces in this object")
     triangles: IntProperty(name="Triangles")
     seconds: FloatProperty(name="Seconds", description="Time of the last tessellation", precision=3)
     failed_faces: IntProperty(name="Failed Faces")
     failed_report: StringProperty(name="Failures", description="Failed faces by id and reason")
     check_report: StringProperty(name="Check", description="Deviation from the exact faces at the last check")
+    check_failed: StringProperty(name="Check Failures",
+                                 description="Faces that failed the last check, one per line with the reason")
 
 
 def register():
