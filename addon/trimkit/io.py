@@ -114,7 +114,7 @@ OTHER_FORMATS = {
     "parasolid": ("a Parasolid file", "a CAD program: export it as STEP"),
     "zip": ("a zip archive", "unpack it first"),
     "gzip": ("a gzip-compressed file", "unpack it first"),
-    "empty": ("empty", None),
+    "empty": ("an empty file", None),
     "unknown": ("not a CAD file trimkit recognises", None),
 }
 SUFFIX_FORMATS = {".igs": "iges", ".iges": "iges", ".stp": "step", ".step": "step", ".p21": "step",

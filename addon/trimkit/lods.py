@@ -28,10 +28,7 @@ def make_lods(context, obj, count, factor=4.0):
     chain, lines = [], []
     for level in range(count):
         tolerance = props.tolerance * factor ** level  # Blender units
-        result = io.tessellate(model, tolerance / props.scale, angle=props.angle, mode=props.mode,
-                               trim_method=props.trim_method, scale=props.scale, parts=[part_key],
-                               uv_mode=props.uv_mode, metres=importer.object_metres(props),
-                               uv_layouts={part_key: layout} if layout else None)
+        result, share = within_tolerance(model, tolerance / props.scale, props, part_key, layout)
         part = result.parts[0]
         layout = layout or part.uv_layout
         lod = lod_object(context, obj, level)
@@ -56,10 +53,43 @@ def make_lods(context, obj, count, factor=4.0):
                 lod[key] = obj[key]
         importer.update_tolerance_metadata(lod)
         chain.append(lod)
-        lines.append(f"LOD{level} {lod.trimkit.triangles} triangles at {tolerance:.4g}")
+        lines.append(f"LOD{level} {lod.trimkit.triangles} triangles at {tolerance:.4g}" +
+                     (f" (meshed at {share:.2f} of it to stay within it)" if share < 1.0 else ""))
     props.lod_report = "; ".join(lines)
     obj.hide_set(True)
     return chain
+
+
+# Re-meshes of a level whose measured deviation exceeds its tolerance, at most.
+TIGHTEN_ROUNDS = 4
+# Each re-mesh asks for the tolerance over the measured excess, with this margin.
+TIGHTEN_MARGIN = 1.1
+
+
+def within_tolerance(model, tolerance, props, part_key, layout):
+    """(io.Tessellation, share of `tolerance` asked for) of the object's part whose
+    two-sided deviation from the exact faces, measured, is within `tolerance` (model
+    units): the tessellator's own bound can be exceeded at coarse tolerances, so each
+    level is measured and, if over, meshed again at a proportionally smaller one.
+    RuntimeError if TIGHTEN_ROUNDS re-meshes do not get there."""
+    share = 1.0
+    for _ in range(TIGHTEN_ROUNDS + 1):
+        result = io.tessellate(model, share * tolerance, angle=props.angle, mode=props.mode,
+                               trim_method=props.trim_method, scale=props.scale, parts=[part_key],
+                               uv_mode=props.uv_mode, metres=importer.object_metres(props),
+                               uv_layouts={part_key: layout} if layout else None)
+        part = result.parts[0]
+        if len(part.triangles) == 0:
+            return result, share
+        faces = io.part_faces(model, *part_key)
+        report = io.measure(model, part.positions / props.scale, part.triangles, part.face_ids,
+                            faces if faces is not None else range(len(model.faces)))
+        excess = max(report.mesh_to_surface, report.surface_to_mesh) / tolerance
+        if excess <= 1.0:
+            return result, share
+        share /= excess * TIGHTEN_MARGIN
+    raise RuntimeError(f"{props.source_name}: a level of detail at tolerance {tolerance:.4g} is still "
+                       f"{excess:.2f}x off after {TIGHTEN_ROUNDS} re-meshes")
 
 
 def lod_object(context, obj, level):
