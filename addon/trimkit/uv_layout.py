@@ -2,12 +2,12 @@
 scale (1 UV unit = 1 metre of surface, measured on the exact surface) and packed
 without overlap, or each face's (u, v) parameters stretched to 0-1 (islands overlap).
 
-Real-world scale: each face's parameters (u, v) are mapped by a 2x2 matrix M with
-M^T M = G, the face's first fundamental form [[Su.Su, Su.Sv], [Su.Sv, Sv.Sv]]
-averaged over its triangles by area (Su, Sv from the exact surface by finite
+Real-world scale: each face's parameters (u, v) are mapped by a 2x2 matrix M, the
+area-weighted mean over its triangles of sqrt(G), G the first fundamental form
+[[Su.Su, Su.Sv], [Su.Sv, Sv.Sv]] (Su, Sv from the exact surface by finite
 differences), times metres per model unit; a parameter step du then has UV length
-sqrt(du^T G du), its length on the surface where G is constant (planes, cylinders,
-cones), to first order elsewhere. Islands are mirrored where needed so that every
+sqrt(du^T G du) where G is constant (planes), the arc length along a direction whose
+speed alone varies (a rational circle's), to first order elsewhere. Islands are mirrored where needed so that every
 island keeps the triangles' winding (no flipped islands for normal maps), and packed
 by their boxes in shelves (tallest first) with a margin.
 
@@ -66,8 +66,8 @@ def real_world_uvs(model, uvs, face_ids, metres, layout=None):
 
 
 def face_matrix(surface, triangles):
-    """2x2 M with M^T M the area-weighted mean first fundamental form of `surface` over
-    the (k, 3, 2) parameter triangles, mirrored if the triangles would wind clockwise."""
+    """2x2 M: the mean of sqrt(G) of `surface` over the (k, 3, 2) parameter triangles
+    (weighted by their parameter area), mirrored if the triangles would wind clockwise."""
     step = max(len(triangles) // METRIC_SAMPLES, 1)
     sample = triangles[::step]
     centroids = sample.mean(axis=1)
@@ -82,17 +82,22 @@ def face_matrix(surface, triangles):
     su, sv = (pu - p0) / du[:, None], (pv - p0) / dv[:, None]
     e, f, g = np.sum(su * su, 1), np.sum(su * sv, 1), np.sum(sv * sv, 1)
     edge1, edge2 = sample[:, 1] - sample[:, 0], sample[:, 2] - sample[:, 0]
-    weights = np.abs(edge1[:, 0] * edge2[:, 1] - edge1[:, 1] * edge2[:, 0]) * np.sqrt(np.maximum(e * g - f * f, 0))
+    weights = np.abs(edge1[:, 0] * edge2[:, 1] - edge1[:, 1] * edge2[:, 0])  # parameter area: a mean over (u, v)
     if not weights.sum() > 0.0:
         weights = np.ones(len(sample))
-    metric = np.array([[np.average(e, weights=weights), np.average(f, weights=weights)],
-                       [np.average(f, weights=weights), np.average(g, weights=weights)]])
-    values, vectors = np.linalg.eigh(metric)
-    if not (np.all(np.isfinite(values)) and values.min() > 0.0):
-        scale = np.sqrt(max(np.trace(metric) / 2.0, 0.0)) if np.isfinite(metric).all() else 0.0
-        matrix = np.eye(2) * (scale if scale > 0.0 else 1.0)
-    else:
-        matrix = vectors @ np.diag(np.sqrt(values)) @ vectors.T
+    # Mean of each sample's sqrt(G) (closed form for 2x2 SPD: (G + sqrt(det) I) / sqrt(tr + 2 sqrt(det))):
+    # along a line of constant metric direction its scale is the mean speed, so a parameter
+    # range maps to its arc length (a rational circle's speed varies; sqrt of the mean G would overshoot).
+    root_det = np.sqrt(np.maximum(e * g - f * f, 0.0))
+    norm = np.sqrt(np.maximum(e + g + 2.0 * root_det, 0.0))
+    ok = norm > 0.0
+    if not ok.any():
+        return np.eye(2)
+    w = weights[ok]
+    roots = np.stack([(e + root_det)[ok], f[ok], f[ok], (g + root_det)[ok]], 1) / norm[ok, None]
+    matrix = np.average(roots, axis=0, weights=w if w.sum() > 0.0 else None).reshape(2, 2)
+    if not (np.all(np.isfinite(matrix)) and np.linalg.det(matrix) > 0.0):
+        matrix = np.eye(2) * max(float(np.sqrt(np.average(e + g, weights=w if w.sum() > 0.0 else None) / 2)), 1e-300)
     mapped = triangles @ matrix.T
     a, b = mapped[:, 1] - mapped[:, 0], mapped[:, 2] - mapped[:, 0]
     if np.sum(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]) < 0.0:
