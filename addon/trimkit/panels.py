@@ -22,8 +22,7 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
             self.draw_tbp(props, layout)
             return
         layout.label(text=f"{props.source_name} ({props.part.lower()} {props.part_index})", icon='FILE')
-        for k, line in enumerate(props.import_report.splitlines()[:4]):
-            layout.label(text=line, icon='INFO' if k == 0 else 'ERROR')
+        draw_import_report(layout, props.import_report)
         col = layout.column()
         col.prop(props, "relative")
         col.prop(props, "relative_tolerance" if props.relative else "tolerance", text="Viewport")
@@ -50,7 +49,11 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
             box.label(text=f"{props.failed_faces} failed faces", icon='ERROR')
             box.label(text=props.failed_report[:120])
         if props.check_report:
-            box.label(text=props.check_report, icon='ERROR' if props.check_failed else 'CHECKMARK')
+            verdict, _, figures = props.check_report.partition(": ")
+            col = box.column(align=True)
+            col.label(text=f"Check: {verdict}", icon='ERROR' if props.check_failed else 'CHECKMARK')
+            for part in figures.split(", "):
+                col.label(text="    " + part)
         draw_check_failures(box, context.object, context)
 
     @staticmethod
@@ -69,6 +72,20 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
         layout.operator("object.trimkit_retessellate", text="Re-mesh", icon='FILE_REFRESH')
         box = layout.box()
         box.label(text=f"{props.faces} patches, {props.triangles} triangles, {props.seconds:.2f} s")
+
+
+def draw_import_report(layout, report):
+    """The import report's first line as file / unit / size, then its warnings in full."""
+    lines = report.splitlines()
+    if not lines:
+        return
+    col = layout.column(align=True)
+    head, _, size = lines[0].partition(", size ")
+    _, _, unit = head.partition(": unit ")
+    col.label(text=f"Unit: {unit}", icon='INFO')
+    col.label(text=f"Size: {size}")
+    for line in lines[1:4]:
+        col.label(text=line, icon='ERROR')
 
 
 # Failed faces listed per object at most (the rest are counted).

@@ -20,6 +20,7 @@ argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 parser = argparse.ArgumentParser()
 parser.add_argument("--out", required=True)
 parser.add_argument("--input", required=True)
+parser.add_argument("--browse", required=True, help="the file the import dialog opens at")
 ARGS = parser.parse_args(argv)
 OUT = pathlib.Path(ARGS.out)
 OUT.mkdir(parents=True, exist_ok=True)
@@ -77,10 +78,22 @@ def step_import():
         view.spaces[0].overlay.show_floor = False
         with bpy.context.temp_override(window=window, area=view, region=region_of(view)):
             bpy.ops.view3d.view_all()
-        properties = area_of(window, 'PROPERTIES')
-        properties.spaces[0].context = 'OBJECT'
-        # Properties wider: move the split between the viewport and the right-hand column.
         return 1.0
+    except Exception:
+        fail()
+
+
+def step_layout():
+    try:
+        window = bpy.context.window_manager.windows[0]
+        # A wide Properties editor: the 3D viewport split, its right third made one.
+        view = area_of(window, 'VIEW_3D')
+        before = set(window.screen.areas)
+        with bpy.context.temp_override(window=window, screen=window.screen, area=view, region=region_of(view)):
+            bpy.ops.screen.area_split(direction='VERTICAL', factor=0.62)
+        new = [a for a in window.screen.areas if a not in before]
+        right = max([view] + new, key=lambda a: a.x)
+        right.type = 'PROPERTIES'  # its Object tab is chosen once it has been drawn
     except Exception:
         fail()
 
@@ -88,11 +101,15 @@ def step_import():
 def step_scroll_to_panel():
     try:
         window = bpy.context.window_manager.windows[0]
-        properties = area_of(window, 'PROPERTIES')
+        properties = max((a for a in window.screen.areas if a.type == 'PROPERTIES'), key=lambda a: a.width)
+        properties.spaces[0].context = 'OBJECT'
         region = region_of(properties)
         with bpy.context.temp_override(window=window, area=properties, region=region):
             for _ in range(40):
                 bpy.ops.view2d.scroll_down(deltax=0, deltay=60)
+        view = area_of(window, 'VIEW_3D')
+        with bpy.context.temp_override(window=window, area=view, region=region_of(view)):
+            bpy.ops.view3d.view_all()
         return 1.0
     except Exception:
         fail()
@@ -102,9 +119,10 @@ def step_shoot_scene():
     try:
         window = bpy.context.window_manager.windows[0]
         shoot("checked_assembly.png", window)
-        shoot("panel.png", window, area_of(window, 'PROPERTIES'))
+        shoot("panel.png", window, max((a for a in window.screen.areas if a.type == 'PROPERTIES'),
+                                       key=lambda a: a.width))
         with bpy.context.temp_override(window=window, area=area_of(window, 'VIEW_3D')):
-            bpy.ops.import_scene.trimkit_iges('INVOKE_DEFAULT')
+            bpy.ops.import_scene.trimkit_iges('INVOKE_DEFAULT', filepath=ARGS.browse)
         return 2.0
     except Exception:
         fail()
@@ -116,7 +134,8 @@ def step_shoot_import_options():
                    if any(a.type == 'FILE_BROWSER' for a in w.screen.areas)]
         assert windows, "the file browser did not open"
         window = windows[0]
-        shoot("import_options.png", window)
+        browser = area_of(window, 'FILE_BROWSER')
+        browser.spaces[0].show_region_tool_props = True  # the operator's options sidebar
         return None
     except Exception:
         fail()
@@ -129,7 +148,16 @@ def step_quit():
     os._exit(0)
 
 
-STEPS = [step_import, step_scroll_to_panel, step_shoot_scene, step_shoot_import_options]
+def step_shoot_browser():
+    try:
+        window = next(w for w in bpy.context.window_manager.windows
+                      if any(a.type == 'FILE_BROWSER' for a in w.screen.areas))
+        shoot("import_options.png", window)
+    except Exception:
+        fail()
+
+
+STEPS = [step_import, step_layout, step_scroll_to_panel, step_shoot_scene, step_shoot_import_options, step_shoot_browser]
 
 
 def run_steps():
