@@ -221,7 +221,7 @@ class OBJECT_OT_trimkit_retessellate(bpy.types.Operator):
 
 
 class OBJECT_OT_trimkit_check(bpy.types.Operator):
-    """Measure how far the selected trimkit objects' meshes are from their exact CAD faces and colour the faces by it"""
+    """Check each CAD face of the selected trimkit objects against its exact face (deviation both ways, area, missing and failed faces), colour the faces by it and list the failures"""
     bl_idname = "object.trimkit_check"
     bl_label = "Check Deviation"
     bl_options = {'REGISTER', 'UNDO'}
@@ -233,10 +233,19 @@ class OBJECT_OT_trimkit_check(bpy.types.Operator):
     def execute(self, context):
         objects = [o for o in context.selected_objects if importer.is_trimkit(o) and o.trimkit.kind == 'CAD']
         def work(progress):
+            # Linked duplicates (instances of one part) share a mesh and its settings: one
+            # check per mesh, its results copied to the other users.
+            users = {}
+            for obj in objects:
+                users.setdefault(obj.data.as_pointer(), []).append(obj)
             checked = []
-            for k, obj in enumerate(objects):
-                checked.append((obj, *mesh_check.check_object(obj)))
-                progress((k + 1) / len(objects))
+            for k, group in enumerate(users.values()):
+                first = group[0]
+                checked.append((first, *mesh_check.check_object(first)))
+                for other in group[1:]:
+                    other.trimkit.check_report = first.trimkit.check_report
+                    other.trimkit.check_failed = first.trimkit.check_failed
+                progress((k + 1) / len(users))
             return checked
         checked = run_with_progress(self, context, work)
         if checked is None:
