@@ -31,6 +31,7 @@ import bpy
 
 from . import importer, io
 from . import lods as lods_module
+from .settings import DEFAULTS
 
 
 def ensure_registered():
@@ -39,9 +40,9 @@ def ensure_registered():
         sys.modules[__package__].register()
 
 
-def convert(inputs, output, tolerance, relative=False, angle=30.0, mode="guaranteed",
-            trim_method="bezier3d", split="BODY", clear_scene=True, report=print, units="FILE",
-            uv_mode="REAL", lods=0, lod_factor=4.0):
+def convert(inputs, output, tolerance, relative=False, angle=math.degrees(DEFAULTS.angle), mode=DEFAULTS.mode,
+            trim_method=DEFAULTS.trim_method, split=DEFAULTS.split, clear_scene=True, report=print,
+            units=DEFAULTS.units, uv_mode=DEFAULTS.uv_mode, lods=0, lod_factor=4.0):
     """Converts CAD files to one output (.blend, .glb or .obj).
 
     tolerance: in the files' units, or a fraction of each model's diagonal when
@@ -115,14 +116,16 @@ def parse(argv):
     parser.add_argument("--output", required=True, help="OUT.blend, OUT.glb or OUT.obj")
     parser.add_argument("--tolerance", type=float, required=True,
                         help="in the files' units, or a fraction of the model's size with --relative")
-    parser.add_argument("--relative", action="store_true")
-    parser.add_argument("--angle", type=float, default=30.0, help="sharp-edge angle, degrees")
-    parser.add_argument("--mode", choices=["guaranteed", "approximate"], default="guaranteed")
-    parser.add_argument("--trim-method", choices=["bezier3d", "yang", "param"], default="bezier3d")
-    parser.add_argument("--split", choices=["BODY", "FACE", "MODEL"], default="BODY")
-    parser.add_argument("--units", choices=["FILE", "MM", "CM", "M", "INCH"], default="FILE",
+    parser.add_argument("--relative", action="store_true",
+                        help="--tolerance is a fraction of each model's diagonal (the importer's default is "
+                             f"{DEFAULTS.relative_tolerance:g} of it)")
+    parser.add_argument("--angle", type=float, default=math.degrees(DEFAULTS.angle), help="sharp-edge angle, degrees")
+    parser.add_argument("--mode", choices=["guaranteed", "approximate"], default=DEFAULTS.mode)
+    parser.add_argument("--trim-method", choices=["bezier3d", "yang", "param"], default=DEFAULTS.trim_method)
+    parser.add_argument("--split", choices=["BODY", "FACE", "MODEL"], default=DEFAULTS.split)
+    parser.add_argument("--units", choices=["FILE", "MM", "CM", "M", "INCH"], default=DEFAULTS.units,
                         help="what the files' numbers are (default: the unit each file declares)")
-    parser.add_argument("--uvs", choices=["REAL", "FACE"], default="REAL",
+    parser.add_argument("--uvs", choices=["REAL", "FACE"], default=DEFAULTS.uv_mode,
                         help="REAL: 1 UV unit = 1 m of surface, islands packed; FACE: each CAD face 0-1")
     parser.add_argument("--lods", type=int, default=0, metavar="N",
                         help="also make N levels of detail <name>_LOD0.. per object (.blend output)")

@@ -2,7 +2,6 @@
 geometry: what the operators, the render handler and batch.py share.
 `settings` carry lengths in Blender units; io works in model units.
 """
-import dataclasses
 import pathlib
 
 import bpy
@@ -10,23 +9,7 @@ import mathutils
 import numpy as np
 
 from . import blender_mesh, io, properties, stored_source, tbp_objects, uv_layout
-
-
-@dataclasses.dataclass
-class ImportSettings:
-    tolerance: float = 0.001          # Blender units, when not relative
-    relative: bool = True
-    relative_tolerance: float = 0.001  # fraction of the model's diagonal
-    render_tolerance: float = 0.0     # Blender units; 0: the viewport tolerance
-    angle: float = 0.5235987755982988  # radians
-    mode: str = "guaranteed"
-    trim_method: str = "bezier3d"
-    units: str = "FILE"               # what the file's numbers are: properties.UNIT_ITEMS
-    scale: float = 0.0                # model units -> Blender units; 0: from `units`
-    split: str = "BODY"               # "BODY", "FACE" or "MODEL"
-    smooth: bool = True
-    exact_normals: bool = True        # custom split normals from the exact surface
-    uv_mode: str = "REAL"             # properties.UV_ITEMS
+from .settings import ImportSettings  # noqa: F401  (importer.ImportSettings for callers)
 
 
 # Parts smaller or larger than this (metres) get a warning: the file's unit is likely wrong.

@@ -12,6 +12,7 @@ from bpy.props import BoolProperty, CollectionProperty, EnumProperty, FloatPrope
 from bpy_extras.io_utils import ImportHelper
 
 from . import cad_faces, importer, io, lods, mesh_check, properties, stored_source, tbp_objects
+from .settings import DEFAULTS
 
 SPLIT_ITEMS = [
     ('BODY', "Per Body", "One object per body (solid or shell); faces in no body together"),
@@ -27,23 +28,23 @@ class ImportCadBase(ImportHelper):
     files: CollectionProperty(type=bpy.types.OperatorFileListElement, options={'HIDDEN', 'SKIP_SAVE'})
     directory: StringProperty(subtype='DIR_PATH', options={'HIDDEN', 'SKIP_SAVE'})
 
-    relative: BoolProperty(name="Relative Tolerance", default=True,
+    relative: BoolProperty(name="Relative Tolerance", default=DEFAULTS.relative,
                            description="Tolerance as a fraction of the model's size instead of a length")
-    relative_tolerance: FloatProperty(name="Fraction", default=0.001, min=1e-7, soft_max=0.05, precision=5,
+    relative_tolerance: FloatProperty(name="Fraction", default=DEFAULTS.relative_tolerance, min=1e-7, soft_max=0.05, precision=5,
                                       step=0.01, description="Tolerance as a fraction of the model's diagonal")
     tolerance: properties.tolerance_property(
-        "Tolerance", "Largest distance from the mesh to the exact surface, in scene units")
+        "Tolerance", "Largest distance from the mesh to the exact surface, in scene units", DEFAULTS.tolerance)
     angle: properties.angle_property()
-    mode: EnumProperty(name="Mode", items=properties.MODE_ITEMS, default='guaranteed')
-    trim_method: EnumProperty(name="Trim Method", items=properties.TRIM_ITEMS, default='bezier3d')
-    units: EnumProperty(name="Units", items=properties.UNIT_ITEMS, default='FILE',
+    mode: EnumProperty(name="Mode", items=properties.MODE_ITEMS, default=DEFAULTS.mode)
+    trim_method: EnumProperty(name="Trim Method", items=properties.TRIM_ITEMS, default=DEFAULTS.trim_method)
+    units: EnumProperty(name="Units", items=properties.UNIT_ITEMS, default=DEFAULTS.units,
                         description="What the file's numbers are: the unit it declares, or one you choose")
-    split: EnumProperty(name="Objects", items=SPLIT_ITEMS, default='BODY')
-    smooth: BoolProperty(name="Smooth Shading", default=True,
+    split: EnumProperty(name="Objects", items=SPLIT_ITEMS, default=DEFAULTS.split)
+    smooth: BoolProperty(name="Smooth Shading", default=DEFAULTS.smooth,
                          description="Smooth shading with custom normals from the exact surface")
-    exact_normals: BoolProperty(name="Exact Normals", default=True,
+    exact_normals: BoolProperty(name="Exact Normals", default=DEFAULTS.exact_normals,
                                 description="Custom split normals from the exact surface (slow above ~500k triangles)")
-    uv_mode: EnumProperty(name="UVs", items=properties.UV_ITEMS, default='REAL')
+    uv_mode: EnumProperty(name="UVs", items=properties.UV_ITEMS, default=DEFAULTS.uv_mode)
 
     def settings(self):
         return importer.ImportSettings(
