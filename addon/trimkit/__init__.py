@@ -6,8 +6,8 @@ bl_info = {
     "author": "trimkit",
     "version": (0, 1, 0),
     "blender": (3, 4, 0),
-    "location": "File > Import > IGES / TBP [trimkit]; Object > Mesh to TBP Solid, Trim by TBP Solid; "
-                "Properties > Object > trimkit",
+    "location": "File > Import > IGES / STEP / TBP [trimkit]; Object > Mesh to TBP Solid, Trim by TBP Solid, "
+                "Make LODs, Reload from Disk; Edit Mode > Select > Select CAD Face; Properties > Object > trimkit",
     "description": "Trimmed NURBS to meshes with a guaranteed tolerance; re-mesh from the stored geometry",
     "category": "Import-Export",
 }

@@ -30,6 +30,8 @@ if __package__ in (None, ""):  # run as a script: import the package this file i
 import bpy
 
 from . import importer, io
+from . import lods as lods_module
+from .settings import DEFAULTS
 
 
 def ensure_registered():
@@ -38,20 +40,25 @@ def ensure_registered():
         sys.modules[__package__].register()
 
 
-def convert(inputs, output, tolerance, relative=False, angle=30.0, mode="guaranteed",
-            trim_method="bezier3d", split="BODY", clear_scene=True, report=print):
+def convert(inputs, output, tolerance, relative=False, angle=math.degrees(DEFAULTS.angle), mode=DEFAULTS.mode,
+            trim_method=DEFAULTS.trim_method, split=DEFAULTS.split, clear_scene=True, report=print,
+            units=DEFAULTS.units, uv_mode=DEFAULTS.uv_mode, lods=0, lod_factor=4.0):
     """Converts CAD files to one output (.blend, .glb or .obj).
 
     tolerance: in the files' units, or a fraction of each model's diagonal when
     `relative`; angle in degrees. Returns one summary dict per input (failed_faces:
     how many; failed_face_reasons: [(model face id, reason)]); raises
     RuntimeError/ValueError naming the file on the first failure, before the
-    output is written.
+    output is written. units: what the files' numbers are ("FILE": their declared
+    unit, or MM, CM, M, INCH). lods: with N > 1 (.blend only), each object also gets
+    the chain <name>_LOD0.._LOD{N-1} at tolerances growing by lod_factor (lods.py).
     """
     output = pathlib.Path(output)
     suffix = output.suffix.lower()
     if suffix not in (".blend", ".glb", ".obj"):
         raise ValueError(f"{output}: expected a .blend, .glb or .obj output")
+    if lods > 1 and suffix != ".blend":
+        raise ValueError(f"{output}: --lods needs a .blend output")
     summaries, parts = [], []
     if suffix == ".blend":
         ensure_registered()
@@ -61,19 +68,27 @@ def convert(inputs, output, tolerance, relative=False, angle=30.0, mode="guarant
         try:
             if suffix == ".blend":
                 settings = importer.ImportSettings(relative=relative, relative_tolerance=tolerance,
-                                                   angle=math.radians(angle), mode=mode,
-                                                   trim_method=trim_method, split=split)
+                                                   angle=math.radians(angle), mode=mode, units=units,
+                                                   trim_method=trim_method, split=split, uv_mode=uv_mode)
                 model, _ = io.read_source(path)
-                scale = importer.scene_scale(model, bpy.context.scene, 0.0)
+                scale = importer.scene_scale(model, bpy.context.scene, 0.0, units)
                 settings.tolerance = tolerance * scale
-                objects, result = importer.import_file(bpy.context, path, settings)
+                objects, result, lines = importer.import_file(bpy.context, path, settings)
                 count = len(objects)
+                for line in lines[1:] if report else []:
+                    report(f"warning: {line}")
+                if lods > 1:
+                    for obj in objects:
+                        lods_module.make_lods(bpy.context, obj, lods, lod_factor)
+                        if report:
+                            report(f"{obj.name}: {obj.trimkit.lod_report}")
             else:
                 model, _ = io.read_source(path)
+                metres = importer.model_metres(model, units)
                 result = io.tessellate(model, tolerance, relative=relative, angle=math.radians(angle),
-                                       mode=mode, trim_method=trim_method, scale=model.scale_to_metres,
-                                       split=split, stem=pathlib.Path(path).stem)
-                placed = io.placed_parts(result.parts, io.placements(model, model.scale_to_metres))
+                                       mode=mode, trim_method=trim_method, scale=metres,
+                                       split=split, stem=pathlib.Path(path).stem, uv_mode=uv_mode, metres=metres)
+                placed = io.placed_parts(result.parts, io.placements(model, metres))
                 parts += placed
                 count = len(placed)
         except (RuntimeError, ValueError, OSError) as err:
@@ -101,11 +116,20 @@ def parse(argv):
     parser.add_argument("--output", required=True, help="OUT.blend, OUT.glb or OUT.obj")
     parser.add_argument("--tolerance", type=float, required=True,
                         help="in the files' units, or a fraction of the model's size with --relative")
-    parser.add_argument("--relative", action="store_true")
-    parser.add_argument("--angle", type=float, default=30.0, help="sharp-edge angle, degrees")
-    parser.add_argument("--mode", choices=["guaranteed", "approximate"], default="guaranteed")
-    parser.add_argument("--trim-method", choices=["bezier3d", "yang", "param"], default="bezier3d")
-    parser.add_argument("--split", choices=["BODY", "FACE", "MODEL"], default="BODY")
+    parser.add_argument("--relative", action="store_true",
+                        help="--tolerance is a fraction of each model's diagonal (the importer's default is "
+                             f"{DEFAULTS.relative_tolerance:g} of it)")
+    parser.add_argument("--angle", type=float, default=math.degrees(DEFAULTS.angle), help="sharp-edge angle, degrees")
+    parser.add_argument("--mode", choices=["guaranteed", "approximate"], default=DEFAULTS.mode)
+    parser.add_argument("--trim-method", choices=["bezier3d", "yang", "param"], default=DEFAULTS.trim_method)
+    parser.add_argument("--split", choices=["BODY", "FACE", "MODEL"], default=DEFAULTS.split)
+    parser.add_argument("--units", choices=["FILE", "MM", "CM", "M", "INCH"], default=DEFAULTS.units,
+                        help="what the files' numbers are (default: the unit each file declares)")
+    parser.add_argument("--uvs", choices=["REAL", "FACE"], default=DEFAULTS.uv_mode,
+                        help="REAL: 1 UV unit = 1 m of surface, islands packed; FACE: each CAD face 0-1")
+    parser.add_argument("--lods", type=int, default=0, metavar="N",
+                        help="also make N levels of detail <name>_LOD0.. per object (.blend output)")
+    parser.add_argument("--lod-factor", type=float, default=4.0, help="tolerance factor between levels")
     return parser.parse_args(argv)
 
 
@@ -114,7 +138,8 @@ def main():
     args = parse(argv)
     try:
         convert(args.input, args.output, args.tolerance, relative=args.relative, angle=args.angle,
-                mode=args.mode, trim_method=args.trim_method, split=args.split)
+                mode=args.mode, trim_method=args.trim_method, split=args.split, units=args.units,
+                uv_mode=args.uvs, lods=args.lods, lod_factor=args.lod_factor)
     except (RuntimeError, ValueError, OSError, ImportError) as err:
         print(f"trimkit batch: {err}", file=sys.stderr)
         sys.exit(1)

@@ -188,12 +188,67 @@ def replace_mesh(obj, part, smooth=True, exact_normals=True):
 
 def replace_shared_mesh(objects, part, smooth=True, exact_normals=True):
     """Gives `objects` (the users of one mesh) one new mesh built from `part`, keeping
-    the old mesh's name; the old one is removed when unused."""
+    the old mesh's name, its materials by CAD face (carry_over) and its custom
+    properties; the old one is removed when unused. The objects themselves (their
+    transforms, modifiers, custom properties, object-linked material slots) are
+    untouched."""
     old = objects[0].data
     name = old.name
     me = create_mesh(part, name, smooth, exact_normals)
+    carry_over(old, me)
     for obj in objects:
         obj.data = me
     if old.users == 0:
         bpy.data.meshes.remove(old)
         me.name = name
+
+
+def cad_face_materials(me):
+    """{cad_face: material slot index} of an existing mesh: each CAD face's most used slot."""
+    attribute = me.attributes.get(FACE_ATTRIBUTE)
+    if attribute is None or attribute.domain != 'FACE' or len(me.polygons) == 0:
+        return {}
+    faces = np.empty(len(me.polygons), np.int32)
+    attribute.data.foreach_get("value", faces)
+    slots = np.empty(len(me.polygons), np.int32)
+    me.polygons.foreach_get("material_index", slots)
+    pairs, counts = np.unique(np.stack([faces, slots], 1), axis=0, return_counts=True)
+    out = {}
+    for (face, slot), count in sorted(zip(map(tuple, pairs.tolist()), counts.tolist()), key=lambda x: x[1]):
+        out[face] = slot  # the most used slot comes last
+    return out
+
+
+def carry_over(old, me):
+    """What the user did to `old` that survives a re-mesh into `me`: its material slots
+    in order, each CAD face's material (by `cad_face`; a face new to the mesh gets the
+    material the importer gives it), and the mesh's custom properties."""
+    by_face = cad_face_materials(old)
+    if len(old.materials):
+        fresh = list(me.materials)
+        fresh_index = np.empty(len(me.polygons), np.int32)
+        me.polygons.foreach_get("material_index", fresh_index)
+        me.materials.clear()
+        for mat in old.materials:
+            me.materials.append(mat)
+        slots = {}
+        for k, mat in enumerate(fresh):  # the importer's materials, found or appended
+            found = [i for i, m in enumerate(me.materials) if m == mat]
+            if not found:
+                me.materials.append(mat)
+                found = [len(me.materials) - 1]
+            slots[k] = found[0]
+        faces = np.empty(len(me.polygons), np.int32)
+        me.attributes[FACE_ATTRIBUTE].data.foreach_get("value", faces)
+        table = np.array([slots[k] for k in range(len(fresh))] or [0], np.int32)
+        index = table[np.clip(fresh_index, 0, len(table) - 1)]
+        if by_face:
+            keys = np.array(sorted(by_face), np.int32)
+            values = np.array([by_face[k] for k in keys.tolist()], np.int32)
+            at = np.minimum(np.searchsorted(keys, faces), len(keys) - 1)
+            known = keys[at] == faces
+            index[known] = values[at[known]]
+        me.polygons.foreach_set("material_index", index)
+    for key in old.keys():
+        if key not in me.keys():
+            me[key] = old[key]

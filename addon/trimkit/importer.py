@@ -2,36 +2,60 @@
 geometry: what the operators, the render handler and batch.py share.
 `settings` carry lengths in Blender units; io works in model units.
 """
-import dataclasses
 import pathlib
 
 import bpy
 import mathutils
 import numpy as np
 
-from . import blender_mesh, io, stored_source, tbp_objects
+from . import blender_mesh, io, properties, stored_source, tbp_objects, uv_layout
+from .settings import ImportSettings  # noqa: F401  (importer.ImportSettings for callers)
 
 
-@dataclasses.dataclass
-class ImportSettings:
-    tolerance: float = 0.001          # Blender units, when not relative
-    relative: bool = True
-    relative_tolerance: float = 0.001  # fraction of the model's diagonal
-    render_tolerance: float = 0.0     # Blender units; 0: the viewport tolerance
-    angle: float = 0.5235987755982988  # radians
-    mode: str = "guaranteed"
-    trim_method: str = "bezier3d"
-    scale: float = 0.0                # model units -> Blender units; 0: file units to metres
-    split: str = "BODY"               # "BODY", "FACE" or "MODEL"
-    smooth: bool = True
-    exact_normals: bool = True        # custom split normals from the exact surface
+# Parts smaller or larger than this (metres) get a warning: the file's unit is likely wrong.
+SMALLEST_PART = 0.001
+LARGEST_PART = 100.0
 
 
-def scene_scale(model, scene, scale):
-    """Model units -> Blender units: `scale`, or the file's units in metres."""
+def model_metres(model, units):
+    """Metres per model unit: the file's declared unit, or the unit the user chose."""
+    return model.scale_to_metres if units == 'FILE' else properties.UNIT_METRES[units]
+
+
+def unit_label(model, units):
+    return f"{model.units} (the file's)" if units == 'FILE' else f"{units.lower()} (chosen; the file says {model.units})"
+
+
+def scene_scale(model, scene, scale, units='FILE'):
+    """Model units -> Blender units: `scale`, or metres per model unit over the scene's unit scale."""
     if scale > 0.0:
         return scale
-    return model.scale_to_metres / (scene.unit_settings.scale_length or 1.0)
+    return model_metres(model, units) / (scene.unit_settings.scale_length or 1.0)
+
+
+def format_length(metres):
+    for unit, size in (("km", 1000.0), ("m", 1.0), ("mm", 0.001)):
+        if abs(metres) >= size:
+            return f"{metres / size:.4g} {unit}"
+    return f"{metres * 1e6:.4g} um"
+
+
+def size_report(path, model, units, parts, scene):
+    """(one line: unit and size, [warnings]) for the parts of one file."""
+    metres = scene.unit_settings.scale_length or 1.0
+    extents = {p.name: (np.ptp(p.positions, axis=0) * metres if len(p.positions) else np.zeros(3)) for p in parts}
+    everything = np.concatenate([p.positions for p in parts if len(p.positions)] or [np.zeros((1, 3))])
+    whole = np.ptp(everything, axis=0) * metres
+    line = f"{path.name}: unit {unit_label(model, units)}, size " + \
+        " x ".join(format_length(x) for x in whole)
+    warnings = []
+    for name, extent in extents.items():
+        size = float(extent.max())
+        if size < SMALLEST_PART or size > LARGEST_PART:
+            warnings.append(f"{path.name}: {name} is {format_length(size)} across, "
+                            f"{'below 1 mm' if size < SMALLEST_PART else 'above 100 m'}: is the unit right? "
+                            f"(import Units: File, Millimetres, Centimetres, Metres, Inches)")
+    return line, warnings
 
 
 def import_file(context, filepath, settings, progress=None):
@@ -39,19 +63,21 @@ def import_file(context, filepath, settings, progress=None):
     instances goes into a new collection named after the file, one object per
     instance, the instances of a body sharing its mesh (linked duplicates).
 
-    Returns (objects, io.Tessellation). Raises RuntimeError/ValueError before
-    anything is added to the scene when the file or the settings are bad.
+    Returns (objects, io.Tessellation, report lines). Raises RuntimeError/ValueError
+    before anything is added to the scene when the file or the settings are bad.
     `progress(fraction)` is called as objects are created.
     """
     path = pathlib.Path(filepath)
     model, data = io.read_source(path)
-    scale = scene_scale(model, context.scene, settings.scale)
+    scale = scene_scale(model, context.scene, settings.scale, settings.units)
+    metres = scale * (context.scene.unit_settings.scale_length or 1.0)
     tolerance = settings.relative_tolerance if settings.relative else settings.tolerance / scale
     result = io.tessellate(model, tolerance, relative=settings.relative, angle=settings.angle,
                            mode=settings.mode, trim_method=settings.trim_method, scale=scale,
-                           split=settings.split, stem=path.stem)
+                           split=settings.split, stem=path.stem, uv_mode=settings.uv_mode, metres=metres)
     placements = io.placements(model, scale)
-    text = stored_source.store(path.name, data)
+    line, warnings = size_report(path, model, settings.units, result.parts, context.scene)
+    text = stored_source.store(path.name, data, path.resolve())
     collection = new_collection(context.collection, path.stem) if placements else context.collection
     assemblies = {(): collection}
     objects = []
@@ -63,11 +89,29 @@ def import_file(context, filepath, settings, progress=None):
             if matrix is not None:
                 obj.matrix_world = mathutils.Matrix(matrix.tolist())
             store_settings(obj.trimkit, text, path.name, part, scale, result, settings)
+            obj.trimkit.import_report = "\n".join([line] + warnings)
+            write_metadata(obj, path, model, settings.units, name)
             objects.append(obj)
         if progress:
             progress((k + 1) / len(result.parts))
     select_only(context, objects)
-    return objects, result
+    return objects, result, [line] + warnings
+
+
+def write_metadata(obj, path, model, units, product):
+    """What the file says about the object, as custom properties (Object > Custom Properties)."""
+    obj["trimkit_file"] = path.name
+    obj["trimkit_path"] = str(path.resolve())
+    obj["trimkit_unit"] = model.units if units == 'FILE' else units.lower()
+    obj["trimkit_product"] = product
+    obj["trimkit_cad_faces"] = obj.trimkit.faces
+    update_tolerance_metadata(obj)
+
+
+def update_tolerance_metadata(obj):
+    """trimkit_tolerance: the absolute tolerance of the current mesh, in the file's units."""
+    props = obj.trimkit
+    obj["trimkit_tolerance"] = props.tolerance / props.scale if props.scale > 0.0 else props.tolerance
 
 
 def new_collection(parent, name):
@@ -111,6 +155,9 @@ def store_settings(props, text, file_name, part, scale, result, settings):
     props.trim_method = settings.trim_method
     props.smooth = settings.smooth
     props.exact_normals = settings.exact_normals
+    props.units = settings.units
+    props.uv_mode = settings.uv_mode
+    props.uv_layout = uv_layout.layout_to_json(part.uv_layout) if part.uv_layout else ""
     record_stats(props, part, result)
 
 
@@ -135,6 +182,8 @@ def record_stats(props, part, result):
     props.failed_faces = len(failed)
     props.failed_report = "; ".join(reason if reason.startswith(f"face {f}:") else f"face {f}: {reason}"
                                     for f, reason in failed)[:1000]
+    props.check_report = ""  # a new mesh: the last check no longer describes it
+    props.check_failed = ""
 
 
 def is_trimkit(obj):
@@ -166,7 +215,7 @@ def retessellate(objects, render=False, progress=None):
     groups = {}
     for obj in objects:
         p = obj.trimkit
-        key = (p.source.name, object_tolerance(p, render), p.angle, p.mode, p.trim_method, p.scale)
+        key = (p.source.name, object_tolerance(p, render), p.angle, p.mode, p.trim_method, p.scale, p.uv_mode)
         groups.setdefault(key, []).append(obj)
     results = []
     for k, (key, members) in enumerate(groups.items()):
@@ -175,7 +224,9 @@ def retessellate(objects, render=False, progress=None):
         tolerance, relative = key[1]
         wanted = list(dict.fromkeys(object_part(o) for o in members))  # instances share a part
         result = io.tessellate(model, tolerance, relative=relative, angle=props.angle, mode=props.mode,
-                               trim_method=props.trim_method, scale=props.scale, parts=wanted)
+                               trim_method=props.trim_method, scale=props.scale, parts=wanted,
+                               uv_mode=props.uv_mode, metres=object_metres(props),
+                               uv_layouts=stored_layouts(members))
         for part in result.parts:
             remesh_part([o for o in members if object_part(o) == (part.kind, part.index)], part, result, render)
         results.append(result)
@@ -184,9 +235,24 @@ def retessellate(objects, render=False, progress=None):
     return results
 
 
+def object_metres(props):
+    """Metres per model unit of the object's mesh (its scale times the scene's unit scale)."""
+    return props.scale * (bpy.context.scene.unit_settings.scale_length or 1.0)
+
+
+def stored_layouts(objects):
+    """{(kind, index): UV layout} of the objects' real-world UV maps: a re-mesh keeps
+    every face's UVs where they were."""
+    out = {}
+    for obj in objects:
+        if obj.trimkit.uv_mode == 'REAL' and obj.trimkit.uv_layout:
+            out.setdefault(object_part(obj), uv_layout.layout_from_json(obj.trimkit.uv_layout))
+    return out
+
+
 # The settings of Object.trimkit that decide the mesh.
 MESH_SETTINGS = ("tolerance", "render_tolerance", "relative", "relative_tolerance", "angle", "mode",
-                 "trim_method", "smooth", "exact_normals")
+                 "trim_method", "smooth", "exact_normals", "uv_mode")
 
 
 def with_linked_duplicates(objects):
@@ -223,4 +289,36 @@ def remesh_part(objects, part, result, render):
     for obj in objects:
         if obj.trimkit.relative:
             obj.trimkit.tolerance = result.tolerance * obj.trimkit.scale
+        if part.uv_layout:
+            obj.trimkit.uv_layout = uv_layout.layout_to_json(part.uv_layout)
         record_stats(obj.trimkit, part, result)
+        update_tolerance_metadata(obj)
+
+
+def reload(text):
+    """Reads the stored file's source path again, stores the new bytes and re-meshes every
+    object made from it. Returns (path, objects). ValueError/RuntimeError, with nothing
+    changed, when the file is gone, unreadable, or no longer has an object's part."""
+    path = stored_source.source_path(text)
+    name = stored_source.file_name(text)
+    if not path:
+        raise ValueError(f"{name}: imported before trimkit stored source paths; import it again")
+    try:
+        data = pathlib.Path(path).read_bytes()
+    except OSError as err:
+        raise OSError(f"{name}: cannot read {path}: {err.strerror or err}") from None
+    model = io.read_bytes(data, name)
+    objects = [o for o in bpy.data.objects if is_trimkit(o) and o.trimkit.source == text]
+    for obj in objects:
+        kind, index = object_part(obj)
+        count = len(model.bodies) if kind == "BODY" else len(model.faces) if kind == "FACE" else 1
+        if kind != "MODEL" and index >= count:
+            raise ValueError(f"{path}: {obj.name} shows {kind.lower()} {index}, which the file no longer has "
+                             f"({count} {kind.lower()}s)")
+    stored_source.replace(text, data)
+    for obj in objects:
+        obj.trimkit.uv_layout = ""  # the faces may have changed: lay the UVs out again
+    retessellate(objects)
+    for obj in objects:
+        obj["trimkit_cad_faces"] = obj.trimkit.faces
+    return path, objects

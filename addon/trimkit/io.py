@@ -13,6 +13,9 @@ import zlib
 
 import numpy as np
 
+from . import uv_layout
+from .uv_layout import normalize_uvs
+
 _native = None
 
 
@@ -42,7 +45,7 @@ class MeshPart:
     positions: np.ndarray       # (n, 3) float64, Blender units
     triangles: np.ndarray       # (m, 3) int32
     face_ids: np.ndarray        # (m,) int32: CAD face per triangle (cad_face)
-    corner_uvs: np.ndarray      # (3m, 2) float32, normalized to [0, 1] per CAD face
+    corner_uvs: np.ndarray      # (3m, 2) float32: metres of surface, packed (uv_layout.REAL), or 0-1 per face
     corner_normals: np.ndarray  # (3m, 3) float32, unit
     edges: np.ndarray           # (k, 2) int32 flagged edges
     edge_flags: np.ndarray      # (k,) uint8: EDGE_FACE_BOUNDARY | EDGE_SHARP
@@ -51,6 +54,7 @@ class MeshPart:
     # CAD face ids the part holds, with triangles or not (a face that failed to mesh
     # has none, yet belongs to its body's object).
     faces: list = dataclasses.field(default_factory=list)
+    uv_layout: dict = None      # uv_layout.real_world_uvs's layout (REAL uvs), else None
 
 
 @dataclasses.dataclass
@@ -83,25 +87,102 @@ OCCT_SUFFIXES = STEP_SUFFIXES + BREP_SUFFIXES
 
 
 def read_bytes(data, name):
-    """Model from a CAD file's bytes, the reader chosen by `name`'s extension: IGES is
-    parsed in memory, STEP and .brep through a temporary copy (Open CASCADE reads files)."""
-    if pathlib.Path(name).suffix.lower() in OCCT_SUFFIXES:
-        return read_step_bytes(data, name)
+    """Model from a CAD file's bytes, the reader chosen by what the bytes are
+    (file_format), else by `name`'s extension: IGES is parsed in memory, STEP and
+    .brep through a temporary copy (Open CASCADE reads files). ValueError naming the
+    file and what it is for anything trimkit does not read as CAD."""
+    kind = file_format(data, name)
+    if kind in ("step", "brep"):
+        return read_step_bytes(data, name, kind)
+    if kind != "iges":
+        raise ValueError(unsupported_message(name, kind))
     return native().read_model_bytes(data, name)
 
 
-def read_step_bytes(data, name):
+READABLE = "IGES (.igs, .iges), STEP (.stp, .step) or Open CASCADE .brep"
+# What other files are, by their first bytes or extension, and where Blender reads them.
+OTHER_FORMATS = {
+    "tbp": ("a TBP solid", "File > Import > TBP (.tbp) [trimkit]"),
+    "stl": ("an STL mesh", "File > Import > STL"),
+    "obj": ("a Wavefront OBJ mesh", "File > Import > Wavefront (.obj)"),
+    "ply": ("a PLY mesh", "File > Import > Stanford (.ply)"),
+    "gltf": ("a glTF scene", "File > Import > glTF 2.0"),
+    "fbx": ("an FBX scene", "File > Import > FBX"),
+    "blend": ("a .blend file", "File > Open or File > Append"),
+    "3dm": ("a Rhino .3dm file", "the import_3dm add-on"),
+    "sat": ("an ACIS .sat file", "a CAD program: export it as STEP"),
+    "parasolid": ("a Parasolid file", "a CAD program: export it as STEP"),
+    "zip": ("a zip archive", "unpack it first"),
+    "gzip": ("a gzip-compressed file", "unpack it first"),
+    "empty": ("an empty file", None),
+    "unknown": ("not a CAD file trimkit recognises", None),
+}
+SUFFIX_FORMATS = {".igs": "iges", ".iges": "iges", ".stp": "step", ".step": "step", ".p21": "step",
+                  ".brep": "brep", ".brp": "brep", ".tbp": "tbp", ".stl": "stl", ".obj": "obj", ".ply": "ply",
+                  ".gltf": "gltf", ".glb": "gltf", ".fbx": "fbx", ".blend": "blend", ".3dm": "3dm",
+                  ".sat": "sat", ".sab": "sat", ".x_t": "parasolid", ".x_b": "parasolid", ".zip": "zip"}
+
+
+MAGIC = ((b"glTF", "gltf"), (b"BLENDER", "blend"), (b"PK\x03\x04", "zip"), (b"Kaydara FBX", "fbx"),
+         (b"\x1f\x8b", "gzip"))
+
+
+def file_format(data, name):
+    """What a file is, from its first bytes where they say ("iges", "step", "brep",
+    "tbp", "stl", ...), else from the extension of `name`; "unknown" otherwise."""
+    head = bytes(data[:4096])
+    text = head.lstrip(b"\xef\xbb\xbf \t\r\n")
+    suffix = SUFFIX_FORMATS.get(pathlib.Path(name).suffix.lower(), "unknown")
+    if not text:
+        return "empty"
+    if text.startswith(b"ISO-10303-21"):
+        return "step"
+    if text.startswith(b"DBRep_DrawableShape") or text.startswith(b"CASCADE Topology"):
+        return "brep"
+    for magic, kind in MAGIC:
+        if head.startswith(magic):
+            return kind
+    if text.startswith(b"ply"):
+        return "ply"
+    if text.startswith(b"{") and b'"tbp"' in head:
+        return "tbp"
+    if text.startswith(b"solid ") and b"facet" in head:
+        return "stl"
+    if len(data) >= 84 and len(data) == 84 + 50 * int.from_bytes(bytes(data[80:84]), "little"):
+        return "stl"  # binary STL: 80-byte header, triangle count, 50 bytes a triangle
+    if is_iges_text(head):
+        return "iges"
+    if text.startswith(b"v ") or b"\nv " in head or b"\nf " in head:
+        return "obj"
+    return suffix  # an .igs that is none of these: the IGES reader says what is wrong
+
+
+def is_iges_text(head):
+    """IGES: 80-column records whose column 73 names the section (S, G, D, P, T)."""
+    lines = head.split(b"\n")[:3]
+    return len(lines) >= 2 and all(len(l.rstrip(b"\r")) == 80 and l[72:73] in (b"S", b"G", b"D", b"P", b"T")
+                                   for l in lines[:2])
+
+
+def unsupported_message(name, kind):
+    what, where = OTHER_FORMATS.get(kind, OTHER_FORMATS["unknown"])
+    message = f"{name}: {what}, not a CAD file this importer reads; trimkit reads {READABLE}"
+    return message + (f"; open it with {where}" if where else "")
+
+
+def read_step_bytes(data, name, kind=None):
     if not has_step():
         raise RuntimeError(f"{name}: this trimkit module cannot read STEP or .brep (built without Open CASCADE)")
+    kind = kind or ("brep" if pathlib.Path(name).suffix.lower() in BREP_SUFFIXES else "step")
     with tempfile.TemporaryDirectory(prefix="trimkit-") as folder:
-        path = pathlib.Path(folder) / pathlib.Path(name).name
+        path = pathlib.Path(folder) / (pathlib.Path(name).stem + (".brep" if kind == "brep" else ".stp"))
         path.write_bytes(data)
         try:
-            if path.suffix.lower() in BREP_SUFFIXES:
+            if kind == "brep":
                 return native().read_brep(str(path))
             return native().read_step(str(path))
         except RuntimeError as err:  # name the file, not its temporary copy
-            raise RuntimeError(str(err).replace(str(path), name)) from None
+            raise RuntimeError(str(err).replace(str(path), name).replace(path.name, name)) from None
 
 
 def compress(data):
@@ -123,14 +204,17 @@ def absolute_tolerance(model, tolerance, relative):
 
 
 def tessellate(model, tolerance, *, relative=False, angle=np.radians(30.0), mode="guaranteed",
-               trim_method="bezier3d", scale=1.0, split="BODY", parts=None, stem="Model"):
+               trim_method="bezier3d", scale=1.0, split="BODY", parts=None, stem="Model",
+               uv_mode=uv_layout.REAL, metres=None, uv_layouts=None):
     """Meshes `model` and splits the mesh into parts.
 
     split: "BODY" (one part per body, faces in no body together), "FACE" (one
     part per face) or "MODEL" (one part); always "BODY" for a model with instances,
     which place whole bodies (see placements). `parts`: optional [(kind, index)] to
     return only those parts (re-meshing existing objects). Raises ValueError
-    for bad options.
+    for bad options. uv_mode: uv_layout.REAL (1 UV unit per metre, `metres` per model
+    unit, default model.scale_to_metres; each part packed, or placed by
+    uv_layouts[(kind, index)] where given) or uv_layout.FACE (each face 0-1).
     """
     start = time.perf_counter()
     split = "BODY" if model.instances else split
@@ -142,11 +226,18 @@ def tessellate(model, tolerance, *, relative=False, angle=np.radians(30.0), mode
     corner_uvs, corner_normals = native().corner_attributes(model, mesh)
     arrays = dict(positions=mesh.positions * scale, triangles=mesh.triangles,
                   face_ids=mesh.face_ids, edges=mesh.edges, edge_flags=mesh.edge_flags,
-                  corner_uvs=normalize_uvs(corner_uvs.reshape(-1, 2), mesh.face_ids),
+                  corner_uvs=corner_uvs.reshape(-1, 2),
                   corner_normals=corner_normals.reshape(-1, 3).astype(np.float32))
     colors = face_colors(model, mesh)
     wanted = parts if parts is not None else part_list(model, split)
     out = [make_part(model, arrays, colors, kind, index, stem) for kind, index in wanted]
+    for part in out:
+        if uv_mode == uv_layout.FACE:
+            part.corner_uvs = normalize_uvs(part.corner_uvs, part.face_ids)
+        else:
+            part.corner_uvs, part.uv_layout = uv_layout.real_world_uvs(
+                model, part.corner_uvs, part.face_ids, model.scale_to_metres if metres is None else metres,
+                (uv_layouts or {}).get((part.kind, part.index)))
     return Tessellation(
         parts=out, faces=result.faces, triangles=mesh.triangle_count, tolerance=result.tolerance,
         seconds=time.perf_counter() - start,
@@ -261,19 +352,6 @@ def make_part(model, arrays, colors, kind, index, stem):
         edges=remap[edges[edge_keep]].reshape(-1, 2), edge_flags=arrays["edge_flags"][edge_keep],
         materials=materials, material_index=material_index,
         faces=list(range(len(model.faces))) if faces is None else list(faces))
-
-
-def normalize_uvs(uvs, face_ids):
-    """(3m, 2) corner uvs scaled to [0, 1] within each CAD face (one UV island per face)."""
-    corner_faces = np.repeat(face_ids, 3)
-    count = int(face_ids.max()) + 1 if len(face_ids) else 0
-    lo = np.full((count, 2), np.inf)
-    hi = np.full((count, 2), -np.inf)
-    np.minimum.at(lo, corner_faces, uvs)
-    np.maximum.at(hi, corner_faces, uvs)
-    size = hi - lo
-    size[~(size > 0.0)] = 1.0
-    return ((uvs - lo[corner_faces]) / size[corner_faces]).astype(np.float32)
 
 
 def face_colors(model, mesh):

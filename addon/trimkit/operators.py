@@ -5,10 +5,14 @@ importer.py or tbp_objects.py."""
 import math
 
 import bpy
-from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
+import pathlib
+import time
+
+from bpy.props import BoolProperty, CollectionProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
 from bpy_extras.io_utils import ImportHelper
 
-from . import importer, io, mesh_check, properties, tbp_objects
+from . import cad_faces, importer, io, lods, mesh_check, properties, stored_source, tbp_objects
+from .settings import DEFAULTS
 
 SPLIT_ITEMS = [
     ('BODY', "Per Body", "One object per body (solid or shell); faces in no body together"),
@@ -18,67 +22,147 @@ SPLIT_ITEMS = [
 
 
 class ImportCadBase(ImportHelper):
-    """Shared options of the CAD importers."""
+    """Shared options of the CAD importers, drawn in groups (IMPORT_PT_trimkit_* below)."""
     bl_options = {'REGISTER', 'UNDO', 'PRESET'}
 
-    relative: BoolProperty(name="Relative Tolerance", default=True,
+    files: CollectionProperty(type=bpy.types.OperatorFileListElement, options={'HIDDEN', 'SKIP_SAVE'})
+    directory: StringProperty(subtype='DIR_PATH', options={'HIDDEN', 'SKIP_SAVE'})
+
+    relative: BoolProperty(name="Relative Tolerance", default=DEFAULTS.relative,
                            description="Tolerance as a fraction of the model's size instead of a length")
-    relative_tolerance: FloatProperty(name="Fraction", default=0.001, min=1e-7, soft_max=0.05, precision=5,
+    relative_tolerance: FloatProperty(name="Fraction", default=DEFAULTS.relative_tolerance, min=1e-7, soft_max=0.05, precision=5,
                                       step=0.01, description="Tolerance as a fraction of the model's diagonal")
     tolerance: properties.tolerance_property(
-        "Tolerance", "Largest distance from the mesh to the exact surface, in scene units")
+        "Tolerance", "Largest distance from the mesh to the exact surface, in scene units", DEFAULTS.tolerance)
     angle: properties.angle_property()
-    mode: EnumProperty(name="Mode", items=properties.MODE_ITEMS, default='guaranteed')
-    trim_method: EnumProperty(name="Trim Method", items=properties.TRIM_ITEMS, default='bezier3d')
-    use_file_units: BoolProperty(name="File Units", default=True,
-                                 description="Scale from the file's units to metres")
-    scale: FloatProperty(name="Scale", default=1.0, min=1e-9, soft_max=1000.0,
-                         description="Model units to scene units, when not using the file's units")
-    split: EnumProperty(name="Objects", items=SPLIT_ITEMS, default='BODY')
-    smooth: BoolProperty(name="Smooth Shading", default=True,
+    mode: EnumProperty(name="Mode", items=properties.MODE_ITEMS, default=DEFAULTS.mode)
+    trim_method: EnumProperty(name="Trim Method", items=properties.TRIM_ITEMS, default=DEFAULTS.trim_method)
+    units: EnumProperty(name="Units", items=properties.UNIT_ITEMS, default=DEFAULTS.units,
+                        description="What the file's numbers are: the unit it declares, or one you choose")
+    split: EnumProperty(name="Objects", items=SPLIT_ITEMS, default=DEFAULTS.split)
+    smooth: BoolProperty(name="Smooth Shading", default=DEFAULTS.smooth,
                          description="Smooth shading with custom normals from the exact surface")
-
-    exact_normals: BoolProperty(name="Exact Normals", default=True,
+    exact_normals: BoolProperty(name="Exact Normals", default=DEFAULTS.exact_normals,
                                 description="Custom split normals from the exact surface (slow above ~500k triangles)")
+    uv_mode: EnumProperty(name="UVs", items=properties.UV_ITEMS, default=DEFAULTS.uv_mode)
 
     def settings(self):
         return importer.ImportSettings(
             tolerance=self.tolerance, relative=self.relative, relative_tolerance=self.relative_tolerance,
-            angle=self.angle, mode=self.mode, trim_method=self.trim_method,
-            scale=0.0 if self.use_file_units else self.scale, split=self.split, smooth=self.smooth,
-            exact_normals=self.exact_normals)
+            angle=self.angle, mode=self.mode, trim_method=self.trim_method, units=self.units,
+            split=self.split, smooth=self.smooth, exact_normals=self.exact_normals, uv_mode=self.uv_mode)
+
+    def paths(self):
+        """The chosen files: every one of `files` in `directory`, else `filepath`."""
+        names = [f.name for f in self.files if f.name]
+        if names and self.directory:
+            return [str(pathlib.Path(self.directory) / name) for name in names]
+        return [self.filepath]
+
+    def draw(self, context):
+        pass  # the options are drawn by the IMPORT_PT_trimkit_* panels, in groups as glTF's
+
+    def execute(self, context):
+        start = time.perf_counter()
+        paths = self.paths()
+
+        def work(progress):
+            done, errors = [], []
+            for k, path in enumerate(paths):
+                try:
+                    done.append(importer.import_file(
+                        context, path, self.settings(),
+                        progress=lambda f, k=k: progress((k + f) / len(paths))))
+                except (RuntimeError, ValueError, OSError) as err:
+                    if len(paths) == 1:
+                        raise
+                    errors.append(str(err))
+            if not done:
+                raise RuntimeError("; ".join(errors))
+            return done, errors
+        done = run_with_progress(self, context, work)
+        if done is None:
+            return {'CANCELLED'}
+        done, errors = done
+        for error in errors:
+            self.report({'WARNING'}, f"skipped: {error}")
+        objects = [o for objs, _, _ in done for o in objs]
+        importer.select_only(context, objects)
+        for _, result, lines in done:
+            for face, reason in result.failed_faces:
+                self.report({'WARNING'}, f"face {face} not meshed: {reason}")
+            self.report({'INFO'}, lines[0])
+            for line in lines[1:]:
+                self.report({'WARNING'}, line)
+        triangles = sum(result.triangles for _, result, _ in done)
+        faces = sum(result.faces for _, result, _ in done)
+        failed = sum(len(result.failed_faces) for _, result, _ in done)
+        mesh_seconds = sum(result.seconds for _, result, _ in done)
+        self.report({'INFO'}, f"{len(paths)} file(s), {len(objects)} objects, {triangles} triangles, "
+                              f"{faces - failed}/{faces} faces in {time.perf_counter() - start:.2f} s "
+                              f"(meshing {mesh_seconds:.2f} s)")
+        return {'FINISHED'}
+
+
+class TrimkitImportPanel:
+    """An option group of the trimkit CAD importers' file browser sidebar (as glTF's)."""
+    bl_space_type = 'FILE_BROWSER'
+    bl_region_type = 'TOOL_PROPS'
+    bl_parent_id = "FILE_PT_operator"
+    properties = ()
+
+    @classmethod
+    def poll(cls, context):
+        operator = context.space_data.active_operator
+        return operator is not None and operator.bl_idname in ("IMPORT_SCENE_OT_trimkit_iges",
+                                                               "IMPORT_SCENE_OT_trimkit_step")
 
     def draw(self, context):
         layout = self.layout
         layout.use_property_split = True
-        layout.prop(self, "relative")
-        layout.prop(self, "relative_tolerance" if self.relative else "tolerance")
-        layout.prop(self, "angle")
-        layout.prop(self, "mode")
-        layout.prop(self, "trim_method")
-        layout.prop(self, "use_file_units")
-        row = layout.row()
-        row.enabled = not self.use_file_units
-        row.prop(self, "scale")
-        layout.prop(self, "split")
-        layout.prop(self, "smooth")
-        row = layout.row()
-        row.enabled = self.smooth
-        row.prop(self, "exact_normals")
+        layout.use_property_decorate = False
+        operator = context.space_data.active_operator
+        self.draw_options(layout, operator)
 
-    def execute(self, context):
-        done = run_with_progress(
-            self, context, lambda progress: importer.import_file(context, self.filepath, self.settings(),
-                                                                 progress=progress))
-        if done is None:
-            return {'CANCELLED'}
-        objects, result = done
-        for face, reason in result.failed_faces:
-            self.report({'WARNING'}, f"face {face} not meshed: {reason}")
-        self.report({'INFO'}, f"{len(objects)} objects, {result.triangles} triangles, "
-                              f"{result.faces - len(result.failed_faces)}/{result.faces} faces in "
-                              f"{result.seconds:.2f} s")
-        return {'FINISHED'}
+    def draw_options(self, layout, operator):
+        for name in self.properties:
+            layout.prop(operator, name)
+
+
+class IMPORT_PT_trimkit_mesh(TrimkitImportPanel, bpy.types.Panel):
+    bl_label = "Mesh"
+
+    def draw_options(self, layout, operator):
+        layout.prop(operator, "relative")
+        layout.prop(operator, "relative_tolerance" if operator.relative else "tolerance")
+        layout.prop(operator, "angle")
+        layout.prop(operator, "mode")
+        layout.prop(operator, "trim_method")
+
+
+class IMPORT_PT_trimkit_units(TrimkitImportPanel, bpy.types.Panel):
+    bl_label = "Units"
+    properties = ("units",)
+
+
+class IMPORT_PT_trimkit_objects(TrimkitImportPanel, bpy.types.Panel):
+    bl_label = "Objects"
+    properties = ("split",)
+
+
+class IMPORT_PT_trimkit_shading(TrimkitImportPanel, bpy.types.Panel):
+    bl_label = "Shading & UVs"
+
+    def draw_options(self, layout, operator):
+        layout.prop(operator, "smooth")
+        row = layout.row()
+        row.enabled = operator.smooth
+        row.prop(operator, "exact_normals")
+        layout.prop(operator, "uv_mode")
+
+
+IMPORT_PANELS = [IMPORT_PT_trimkit_mesh, IMPORT_PT_trimkit_units, IMPORT_PT_trimkit_objects,
+                 IMPORT_PT_trimkit_shading]
 
 
 class IMPORT_SCENE_OT_trimkit_iges(bpy.types.Operator, ImportCadBase):
@@ -138,7 +222,7 @@ class OBJECT_OT_trimkit_retessellate(bpy.types.Operator):
 
 
 class OBJECT_OT_trimkit_check(bpy.types.Operator):
-    """Measure how far the selected trimkit objects' meshes are from their exact CAD faces and colour the faces by it"""
+    """Check each CAD face of the selected trimkit objects against its exact face (deviation both ways, area, missing and failed faces), colour the faces by it and list the failures"""
     bl_idname = "object.trimkit_check"
     bl_label = "Check Deviation"
     bl_options = {'REGISTER', 'UNDO'}
@@ -150,17 +234,28 @@ class OBJECT_OT_trimkit_check(bpy.types.Operator):
     def execute(self, context):
         objects = [o for o in context.selected_objects if importer.is_trimkit(o) and o.trimkit.kind == 'CAD']
         def work(progress):
+            # Linked duplicates (instances of one part) share a mesh and its settings: one
+            # check per mesh, its results copied to the other users.
+            users = {}
+            for obj in objects:
+                users.setdefault(obj.data.as_pointer(), []).append(obj)
             checked = []
-            for k, obj in enumerate(objects):
-                checked.append((obj, *mesh_check.check_object(obj)))
-                progress((k + 1) / len(objects))
+            for k, group in enumerate(users.values()):
+                first = group[0]
+                checked.append((first, *mesh_check.check_object(first)))
+                for other in group[1:]:
+                    other.trimkit.check_report = first.trimkit.check_report
+                    other.trimkit.check_failed = first.trimkit.check_failed
+                progress((k + 1) / len(users))
             return checked
         checked = run_with_progress(self, context, work)
         if checked is None:
             return {'CANCELLED'}
-        for obj, report, tolerance in checked:
-            level = 'INFO' if max(report.mesh_to_surface, report.surface_to_mesh) <= tolerance else 'WARNING'
-            self.report({level}, f"{obj.name}: {obj.trimkit.check_report}")
+        for obj, report, tolerance, faces in checked:
+            bad = [c for c in faces if not c.passed]
+            self.report({'WARNING' if bad else 'INFO'}, f"{obj.name}: {obj.trimkit.check_report}")
+            for c in bad[:20]:
+                self.report({'WARNING'}, f"{obj.name}: {c.reason}")
         return {'FINISHED'}
 
 
@@ -258,6 +353,100 @@ class OBJECT_OT_trimkit_trim(bpy.types.Operator):
         return {'FINISHED'}
 
 
+class OBJECT_OT_trimkit_reload(bpy.types.Operator):
+    """Read the CAD file of the selected trimkit objects again from where it was imported, store it, and re-mesh every object made from it"""
+    bl_idname = "object.trimkit_reload"
+    bl_label = "Reload from Disk"
+    bl_options = {'REGISTER', 'UNDO'}
+
+    @classmethod
+    def poll(cls, context):
+        return any(importer.is_trimkit(o) and o.trimkit.kind == 'CAD' for o in context.selected_objects)
+
+    def execute(self, context):
+        texts = {o.trimkit.source for o in context.selected_objects
+                 if importer.is_trimkit(o) and o.trimkit.kind == 'CAD'}
+        done = run_with_progress(self, context, lambda progress: [importer.reload(text) for text in texts])
+        if done is None:
+            return {'CANCELLED'}
+        for path, objects in done:
+            self.report({'INFO'}, f"{path}: reloaded, {len(objects)} objects re-meshed, "
+                                  f"{sum(o.trimkit.triangles for o in objects)} triangles")
+        return {'FINISHED'}
+
+
+class MESH_OT_trimkit_select_cad_face(bpy.types.Operator):
+    """Select every face of the CAD face the active face belongs to (its cad_face)"""
+    bl_idname = "mesh.trimkit_select_cad_face"
+    bl_label = "Select CAD Face"
+    bl_options = {'REGISTER', 'UNDO'}
+    extend: BoolProperty(name="Extend", default=False, description="Keep the current selection")
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.edit_object
+        return obj is not None and obj.type == 'MESH' and "cad_face" in obj.data.attributes
+
+    def execute(self, context):
+        try:
+            faces, count = cad_faces.select_cad_face(context.edit_object, self.extend)
+        except ValueError as err:
+            self.report({'ERROR'}, str(err))
+            return {'CANCELLED'}
+        self.report({'INFO'}, f"CAD face {faces[0]}: {count} mesh faces selected")
+        return {'FINISHED'}
+
+
+class MESH_OT_trimkit_select_similar_cad_faces(bpy.types.Operator):
+    """Select the CAD faces like the selected ones: the same kind of surface and about the same area"""
+    bl_idname = "mesh.trimkit_select_similar_cad_faces"
+    bl_label = "Select Similar CAD Faces"
+    bl_options = {'REGISTER', 'UNDO'}
+    threshold: FloatProperty(name="Area Threshold", default=0.02, min=0.0, max=1.0, subtype='FACTOR',
+                             description="Largest relative difference of area")
+    kind_only: BoolProperty(name="Surface Kind Only", default=False,
+                            description="Every CAD face of the same kind of surface, whatever its area")
+
+    @classmethod
+    def poll(cls, context):
+        return MESH_OT_trimkit_select_cad_face.poll(context) and importer.is_trimkit(context.edit_object)
+
+    def execute(self, context):
+        try:
+            faces, count = cad_faces.select_similar(context.edit_object, self.threshold, self.kind_only)
+        except (ValueError, RuntimeError) as err:
+            self.report({'ERROR'}, str(err))
+            return {'CANCELLED'}
+        self.report({'INFO'}, f"{len(faces)} CAD faces, {count} mesh faces selected")
+        return {'FINISHED'}
+
+
+class OBJECT_OT_trimkit_make_lods(bpy.types.Operator):
+    """Make a chain of levels of detail of the selected CAD objects, named <name>_LOD0, _LOD1, ... (as Unreal and Unity import them): each a new object at its own tolerance, the tolerance growing by a factor per level; UV layout and materials shared"""
+    bl_idname = "object.trimkit_make_lods"
+    bl_label = "Make LODs"
+    bl_options = {'REGISTER', 'UNDO'}
+    count: IntProperty(name="Levels", default=3, min=2, soft_max=6, description="Meshes in the chain")
+    factor: FloatProperty(name="Factor", default=4.0, min=1.1, soft_max=16.0,
+                          description="Each level's tolerance is the previous one's times this")
+
+    @classmethod
+    def poll(cls, context):
+        return any(importer.is_trimkit(o) and o.trimkit.kind == 'CAD' for o in context.selected_objects)
+
+    def execute(self, context):
+        sources = [o for o in context.selected_objects if importer.is_trimkit(o) and o.trimkit.kind == 'CAD']
+        done = run_with_progress(self, context, lambda progress: [
+            lods.make_lods(context, o, self.count, self.factor) for o in sources])
+        if done is None:
+            return {'CANCELLED'}
+        for source, chain in zip(sources, done):
+            counts = [o.trimkit.triangles for o in chain]
+            level = 'INFO' if all(a > b for a, b in zip(counts, counts[1:])) else 'WARNING'
+            self.report({level}, f"{source.name}: {source.trimkit.lod_report}")
+        return {'FINISHED'}
+
+
 def menu_import(self, context):
     self.layout.operator(IMPORT_SCENE_OT_trimkit_iges.bl_idname, text="IGES (.igs, .iges) [trimkit]")
     if io.has_step():
@@ -269,13 +458,23 @@ def menu_object(self, context):
     self.layout.separator()
     self.layout.operator(OBJECT_OT_trimkit_mesh_to_tbp.bl_idname)
     self.layout.operator(OBJECT_OT_trimkit_trim.bl_idname)
+    self.layout.operator(OBJECT_OT_trimkit_make_lods.bl_idname)
+    self.layout.operator(OBJECT_OT_trimkit_reload.bl_idname)
+
+
+def menu_select_edit(self, context):
+    self.layout.separator()
+    self.layout.operator(MESH_OT_trimkit_select_cad_face.bl_idname)
+    self.layout.operator(MESH_OT_trimkit_select_similar_cad_faces.bl_idname)
 
 
 def classes():
     """The operator classes to register: STEP only when _trimkit can read it."""
     found = [IMPORT_SCENE_OT_trimkit_iges, OBJECT_OT_trimkit_retessellate, OBJECT_OT_trimkit_check,
              IMPORT_SCENE_OT_trimkit_tbp,
-             OBJECT_OT_trimkit_mesh_to_tbp, OBJECT_OT_trimkit_trim]
+             OBJECT_OT_trimkit_mesh_to_tbp, OBJECT_OT_trimkit_trim, OBJECT_OT_trimkit_reload,
+             MESH_OT_trimkit_select_cad_face, MESH_OT_trimkit_select_similar_cad_faces,
+             OBJECT_OT_trimkit_make_lods, *IMPORT_PANELS]
     if io.has_step():
         found.insert(1, IMPORT_SCENE_OT_trimkit_step)
     return found
@@ -286,9 +485,11 @@ def register():
         bpy.utils.register_class(cls)
     bpy.types.TOPBAR_MT_file_import.append(menu_import)
     bpy.types.VIEW3D_MT_object.append(menu_object)
+    bpy.types.VIEW3D_MT_select_edit_mesh.append(menu_select_edit)
 
 
 def unregister():
+    bpy.types.VIEW3D_MT_select_edit_mesh.remove(menu_select_edit)
     bpy.types.VIEW3D_MT_object.remove(menu_object)
     bpy.types.TOPBAR_MT_file_import.remove(menu_import)
     for cls in reversed(classes()):

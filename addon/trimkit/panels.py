@@ -22,6 +22,7 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
             self.draw_tbp(props, layout)
             return
         layout.label(text=f"{props.source_name} ({props.part.lower()} {props.part_index})", icon='FILE')
+        draw_import_report(layout, props.import_report)
         col = layout.column()
         col.prop(props, "relative")
         col.prop(props, "relative_tolerance" if props.relative else "tolerance", text="Viewport")
@@ -31,16 +32,29 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
         col.prop(props, "trim_method")
         col.prop(props, "smooth")
         col.prop(props, "exact_normals")
+        col.prop(props, "uv_mode")
         row = layout.row()
         row.operator("object.trimkit_retessellate", icon='FILE_REFRESH')
         row.operator("object.trimkit_check", icon='VIEWZOOM')
+        row = layout.row()
+        row.operator("object.trimkit_reload", icon='FILE_REFRESH')
+        row.operator("object.trimkit_make_lods", icon='MOD_DECIM')
         box = layout.box()
         box.label(text=f"{props.faces} faces, {props.triangles} triangles, {props.seconds:.2f} s")
+        if props.lod_level >= 0:
+            box.label(text=f"LOD{props.lod_level} of {props.lod_source}", icon='MOD_DECIM')
+        for line in props.lod_report.split("; ") if props.lod_report else []:
+            box.label(text=line, icon='MOD_DECIM')
         if props.failed_faces:
             box.label(text=f"{props.failed_faces} failed faces", icon='ERROR')
             box.label(text=props.failed_report[:120])
         if props.check_report:
-            box.label(text=props.check_report, icon='CHECKMARK')
+            verdict, _, figures = props.check_report.partition(": ")
+            col = box.column(align=True)
+            col.label(text=f"Check: {verdict}", icon='ERROR' if props.check_failed else 'CHECKMARK')
+            for part in figures.split(", "):
+                col.label(text="    " + part)
+        draw_check_failures(box, context.object, context)
 
     @staticmethod
     def draw_tbp(props, layout):
@@ -58,6 +72,41 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
         layout.operator("object.trimkit_retessellate", text="Re-mesh", icon='FILE_REFRESH')
         box = layout.box()
         box.label(text=f"{props.faces} patches, {props.triangles} triangles, {props.seconds:.2f} s")
+
+
+def draw_import_report(layout, report):
+    """The import report's first line as file / unit / size, then its warnings in full."""
+    lines = report.splitlines()
+    if not lines:
+        return
+    col = layout.column(align=True)
+    head, _, size = lines[0].partition(", size ")
+    _, _, unit = head.partition(": unit ")
+    col.label(text=f"Unit: {unit}", icon='INFO')
+    col.label(text=f"Size: {size}")
+    for line in lines[1:4]:
+        col.label(text=line, icon='ERROR')
+
+
+# Failed faces listed per object at most (the rest are counted).
+LISTED_FAILURES = 12
+
+
+def draw_check_failures(layout, active, context):
+    """The failed faces of the last check, with reasons, for the active object and every
+    other selected trimkit object."""
+    others = [o for o in getattr(context, "selected_objects", None) or []
+              if o is not active and importer.is_trimkit(o) and o.trimkit.check_failed]
+    for obj in [active] + sorted(others, key=lambda o: o.name):
+        lines = obj.trimkit.check_failed.splitlines()
+        if not lines:
+            continue
+        col = layout.column(align=True)
+        col.label(text=f"{obj.name}: {len(lines)} faces fail the check", icon='ERROR')
+        for line in lines[:LISTED_FAILURES]:
+            col.label(text="    " + line)
+        if len(lines) > LISTED_FAILURES:
+            col.label(text=f"    ... and {len(lines) - LISTED_FAILURES} more")
 
 
 def register():

@@ -5,6 +5,8 @@ import bpy
 from bpy.props import (BoolProperty, EnumProperty, FloatProperty, FloatVectorProperty, IntProperty,
                        PointerProperty, StringProperty)
 
+from .settings import DEFAULTS
+
 MODE_ITEMS = [
     ('guaranteed', "Guaranteed", "Every mesh point within the tolerance of the exact surface (conservative bound)"),
     ('approximate', "Approximate", "The same bound from surface samples: fewer triangles, no strict guarantee"),
@@ -23,6 +25,19 @@ KEEP_ITEMS = [
     ('outside', "Outside", "Keep the part of the patches outside the tool solid"),
     ('inside', "Inside", "Keep the part of the patches inside the tool solid"),
 ]
+UNIT_ITEMS = [
+    ('FILE', "File", "The length unit the file declares"),
+    ('MM', "Millimetres", "The file's numbers are millimetres"),
+    ('CM', "Centimetres", "The file's numbers are centimetres"),
+    ('M', "Metres", "The file's numbers are metres"),
+    ('INCH', "Inches", "The file's numbers are inches"),
+]
+UNIT_METRES = {'MM': 0.001, 'CM': 0.01, 'M': 1.0, 'INCH': 0.0254}
+UV_ITEMS = [
+    ('REAL', "Real-World Scale", "1 UV unit = 1 metre of surface (measured on the exact surface), "
+                                 "one island per CAD face, packed without overlap"),
+    ('FACE', "Per Face 0-1", "Each CAD face's surface parameters stretched to 0-1 (islands overlap)"),
+]
 PART_ITEMS = [
     ('MODEL', "Model", "All faces (or the faces in no body)"),
     ('BODY', "Body", "One body"),
@@ -37,7 +52,7 @@ def tolerance_property(name, description, default=0.001):
 
 def angle_property():
     return FloatProperty(name="Angle", description="Edges where the surface normals turn more than this are sharp",
-                         default=math.radians(30.0), min=0.0, max=math.pi, subtype='ANGLE')
+                         default=DEFAULTS.angle, min=0.0, max=math.pi, subtype='ANGLE')
 
 
 class TRIMKIT_PG_object(bpy.types.PropertyGroup):
@@ -59,18 +74,30 @@ class TRIMKIT_PG_object(bpy.types.PropertyGroup):
     part_index: IntProperty(name="Part Index", default=-1)
     scale: FloatProperty(name="Scale", description="Model units to Blender units", default=1.0, min=0.0)
 
-    tolerance: tolerance_property("Tolerance", "Largest distance from the mesh to the exact surface (viewport)")
+    tolerance: tolerance_property("Tolerance", "Largest distance from the mesh to the exact surface (viewport)",
+                                  DEFAULTS.tolerance)
     render_tolerance: tolerance_property(
         "Render Tolerance", "Tolerance for final renders (F12, blender -b -f); 0 uses the viewport tolerance", 0.0)
-    relative: BoolProperty(name="Relative", description="Tolerance as a fraction of the model's size", default=False)
+    relative: BoolProperty(name="Relative", description="Tolerance as a fraction of the model's size",
+                           default=DEFAULTS.relative)
     relative_tolerance: FloatProperty(name="Relative Tolerance", description="Fraction of the model's diagonal",
-                                      default=0.001, min=0.0, soft_min=1e-6, soft_max=0.1, precision=5, step=0.01)
+                                      default=DEFAULTS.relative_tolerance, min=0.0, soft_min=1e-6, soft_max=0.1, precision=5, step=0.01)
     angle: angle_property()
-    mode: EnumProperty(name="Mode", items=MODE_ITEMS, default='guaranteed')
-    trim_method: EnumProperty(name="Trim Method", items=TRIM_ITEMS, default='bezier3d')
-    smooth: BoolProperty(name="Smooth", description="Smooth shading", default=True)
-    exact_normals: BoolProperty(name="Exact Normals", default=True,
+    mode: EnumProperty(name="Mode", items=MODE_ITEMS, default=DEFAULTS.mode)
+    trim_method: EnumProperty(name="Trim Method", items=TRIM_ITEMS, default=DEFAULTS.trim_method)
+    smooth: BoolProperty(name="Smooth", description="Smooth shading", default=DEFAULTS.smooth)
+    exact_normals: BoolProperty(name="Exact Normals", default=DEFAULTS.exact_normals,
                                 description="Custom split normals from the exact surface (slow above ~500k triangles)")
+
+    units: EnumProperty(name="Units", items=UNIT_ITEMS, default=DEFAULTS.units,
+                        description="What the file's numbers are (the scale follows)")
+    uv_mode: EnumProperty(name="UVs", items=UV_ITEMS, default=DEFAULTS.uv_mode)
+    uv_layout: StringProperty(name="UV Layout", description="Each CAD face's UV mapping and place (JSON), "
+                                                          "kept so that re-meshing keeps the UVs where they were")
+    lod_level: IntProperty(name="LOD Level", default=-1, description="Level in an LOD chain; -1: not an LOD")
+    lod_source: StringProperty(name="LOD Of", description="The object an LOD chain was made from")
+    lod_report: StringProperty(name="LODs", description="Triangles and tolerance of each level made from this object")
+    import_report: StringProperty(name="Import", description="File unit, size and warnings at import")
 
     faces: IntProperty(name="Faces", description="CAD faces in this object")
     triangles: IntProperty(name="Triangles")
@@ -78,6 +105,8 @@ class TRIMKIT_PG_object(bpy.types.PropertyGroup):
     failed_faces: IntProperty(name="Failed Faces")
     failed_report: StringProperty(name="Failures", description="Failed faces by id and reason")
     check_report: StringProperty(name="Check", description="Deviation from the exact faces at the last check")
+    check_failed: StringProperty(name="Check Failures",
+                                 description="Faces that failed the last check, one per line with the reason")
 
 
 def register():

@@ -148,6 +148,8 @@ void bind_tess(py::module_& m) {
         .def_readonly("face_mesh_to_surface", &tess::DeviationReport::face_mesh_to_surface,
                       "per measured face (in the order of `faces`): max mesh -> surface distance, NaN without triangles")
         .def_readonly("face_surface_to_mesh", &tess::DeviationReport::face_surface_to_mesh)
+        .def_readonly("face_area_exact", &tess::DeviationReport::face_area_exact,
+                      "per measured face: its exact trimmed area (model units squared)")
         .def_readonly("warnings", &tess::DeviationReport::warnings);
     m.def("measure_deviation", &deviation_of_faces, py::arg("model"), py::arg("mesh"),
           py::arg("faces") = std::vector<int>{}, py::arg("samples") = 4, py::call_guard<py::gil_scoped_release>(),

@@ -79,7 +79,12 @@ def check_mesh(obj):
     assert obj.trimkit.triangles == len(me.polygons)
     assert "UVMap" in me.uv_layers, "no UV map"
     uv = me.uv_layers["UVMap"].data
-    assert 0.0 <= min(d.uv[0] for d in uv) and max(d.uv[0] for d in uv) <= 1.0 + 1e-4
+    low = min(min(d.uv) for d in uv)
+    high = max(d.uv[0] for d in uv)
+    if obj.trimkit.uv_mode == 'FACE':
+        assert 0.0 <= low and high <= 1.0 + 1e-4, (low, high)
+    else:  # real-world scale, packed from the origin
+        assert -1e-6 <= low, low
     assert me.has_custom_normals, "no custom normals"
     assert any(e.use_seam for e in me.edges), "no UV seams on face boundaries"
     assert len(me.materials) >= 1 and me.materials[0] is not None
@@ -193,6 +198,7 @@ def test_bearing_imports_with_every_face_covered():
     failed = sum(o.trimkit.failed_faces for o in objects)
     assert len(ids) + failed == objects[0].trimkit.faces, (len(ids), failed)
     assert ids == set(range(max(ids) + 1)) or failed
+    assert "below 1 mm: is the unit right?" in objects[0].trimkit.import_report, objects[0].trimkit.import_report
     start_tris = triangles(objects)
     coarser = retessellate_with_tolerance(objects, 4.0)
     assert coarser < start_tris
@@ -236,7 +242,7 @@ def test_failed_face_is_recorded_on_every_object_of_its_body():
     from iges_samples import write_stray_hole_plate
     path = write_stray_hole_plate(TMP / "stray_subfigure.igs", instances=((0, 0, 0), (200, 0, 0)))
     empty_scene()
-    objects = import_iges(path, relative=False, tolerance=0.05, use_file_units=False, scale=1.0)
+    objects = import_iges(path, relative=False, tolerance=0.05, units='M')
     assert len(objects) == 2 and objects[0].data == objects[1].data, objects
     for _ in range(2):  # as imported, then re-meshed
         for o in objects:
@@ -536,7 +542,15 @@ def test_step_assembly_imports_as_a_collection_tree_of_linked_duplicates():
         assert o.trimkit.failed_faces == 0, (o.name, o.trimkit.failed_report)
     origins = {tuple(round(x, 6) for x in o.matrix_world.translation) for o in objects}
     assert len(origins) > 5, origins  # parts placed by their own transforms
-    print(f"    as1: 18 objects sharing 5 meshes in {len(tree)} collections, area within {worst:.2e} of OCCT's")
+    select_only(objects)
+    start = time.perf_counter()
+    assert bpy.ops.object.trimkit_check() == {'FINISHED'}
+    seconds = time.perf_counter() - start
+    for o in objects:  # every instance gets its part's verdict (checked once per shared mesh)
+        assert o.trimkit.check_report.startswith(f"{o.trimkit.faces} "
+                                                 "faces, all pass"), (o.name, o.trimkit.check_report)
+    print(f"    as1: 18 objects sharing 5 meshes in {len(tree)} collections, area within {worst:.2e} of OCCT's; "
+          f"checked (5 meshes) in {seconds:.1f} s, every face passes")
 
 
 # -- TBP solids ---------------------------------------------------------------
@@ -799,6 +813,409 @@ def test_workbench_render_of_hammer_uses_render_tolerance():
     assert rendered["triangles"] > viewport, (rendered, viewport)
     assert triangles(objects) == viewport, "viewport mesh not restored after the render"
     print(f"    hammer: {viewport} triangles viewport, {rendered['triangles']} render -> {out}")
+
+
+# -- issue 12: the add-on for real users ---------------------------------------
+
+def polygon_values(me, name, dtype):
+    import numpy as np
+    values = np.empty(len(me.polygons), dtype)
+    me.polygons.foreach_get(name, values)
+    return values
+
+
+def test_remesh_keeps_materials_by_cad_face_modifiers_transform_properties_and_clears_the_check():
+    import numpy as np
+    empty_scene()
+    obj = import_iges(BRACKET, split='MODEL')[0]  # face 0: the plate, face 1: the quarter cylinder
+    me = obj.data
+    importer_material = me.materials[0]
+    red = bpy.data.materials.new("artist red")
+    me.materials.append(red)
+    faces = read_face_values(obj, "cad_face")
+    me.polygons.foreach_set("material_index", np.where(faces == 1, 1, 0).astype(np.int32))
+    obj.modifiers.new("Bevel", 'BEVEL')
+    obj.modifiers.new("Weld", 'WELD')
+    obj.location, obj.rotation_euler, obj.scale = (1.0, 2.0, 3.0), (0.1, 0.2, 0.3), (2.0, 2.0, 2.0)
+    obj["artist_note"] = "keep me"
+    me["mesh_note"] = 7
+    bpy.context.view_layer.update()
+    matrix = obj.matrix_world.copy()
+    select_only([obj])
+    assert bpy.ops.object.trimkit_check() == {'FINISHED'}
+    assert obj.trimkit.check_report and "trimkit_check" in obj.data.attributes
+    before = len(obj.data.polygons)
+    after = retessellate_with_tolerance([obj], 0.25)
+    me = obj.data
+    assert after > before, (before, after)
+    faces = read_face_values(obj, "cad_face")
+    slots = polygon_values(me, "material_index", np.int32)
+    assert set(slots[faces == 1].tolist()) == {1} and set(slots[faces == 0].tolist()) == {0}, \
+        (set(slots[faces == 1].tolist()), set(slots[faces == 0].tolist()))
+    assert list(me.materials) == [importer_material, red], list(me.materials)
+    assert [m.type for m in obj.modifiers] == ['BEVEL', 'WELD']
+    assert all(abs(a - b) < 1e-6 for ra, rb in zip(obj.matrix_world, matrix) for a, b in zip(ra, rb))
+    assert obj["artist_note"] == "keep me" and me["mesh_note"] == 7
+    assert obj.trimkit.check_report == "" and obj.trimkit.check_failed == ""
+    assert "trimkit_check" not in me.attributes and "trimkit_deviation" not in me.attributes
+    assert not any(label.startswith("Check:") for label in panel_labels(obj))
+    print(f"    bracket re-meshed {before} -> {after} triangles: face 1 keeps 'artist red' on all "
+          f"{int((faces == 1).sum())} of its triangles, 2 modifiers, transform, properties; check cleared")
+
+
+def bracket_hole_covered_area_ratio():
+    """samples/make_samples.py: the plate is 100 x 60 mm with a hole of radius 10 mm."""
+    return 100.0 * 60.0 / (100.0 * 60.0 - math.pi * 10.0 ** 2)
+
+
+def test_check_flags_a_covered_hole_and_a_missing_face_and_lists_them_for_every_object():
+    import numpy as np
+    empty_scene()
+    good, bad = import_iges(BRACKET, split='MODEL')[0], import_iges(BRACKET, split='MODEL')[0]
+    select_only([good])
+    assert bpy.ops.object.trimkit_check() == {'FINISHED'}
+    assert good.trimkit.check_failed == "" and "2 faces, all pass" in good.trimkit.check_report, \
+        (good.trimkit.check_report, good.trimkit.check_failed)
+    colours = np.empty(4 * len(good.data.loops), np.float32)
+    good.data.attributes["trimkit_check"].data.foreach_get("color", colours)
+    assert np.all(colours.reshape(-1, 4)[:, 0] == 0.0), "a face of the good bracket is not green"
+    # The plate meshed over its hole (two triangles over the 100 x 60 mm rectangle: on the
+    # plate's plane, so both deviations are 0) and the quarter cylinder left out.
+    s = bad.trimkit.scale
+    assert abs(s / 0.001 - 1) < 1e-6  # mm (a float32 property)
+    me = bpy.data.meshes.new("covered")
+    me.from_pydata([(0, 0, 0), (100 * s, 0, 0), (100 * s, 60 * s, 0), (0, 60 * s, 0)], [], [(0, 1, 2), (0, 2, 3)])
+    me.attributes.new("cad_face", 'INT', 'FACE').data.foreach_set("value", [0, 0])
+    bad.data = me
+    select_only([bad, good])
+    assert bpy.ops.object.trimkit_check() == {'FINISHED'}
+    lines = bad.trimkit.check_failed.splitlines()
+    ratio = bracket_hole_covered_area_ratio()
+    assert len(lines) == 2, lines
+    assert lines[0].startswith(f"face 0: mesh area {ratio:.3f}x the exact area"), (lines[0], ratio)
+    assert lines[1].startswith("face 1: missing"), lines[1]
+    deviation = read_face_values(bad, "trimkit_deviation")
+    assert deviation.max() <= 1e-9, deviation  # deviation alone would call the plate good
+    colours = np.empty(4 * len(me.loops), np.float32)
+    me.attributes["trimkit_check"].data.foreach_get("color", colours)
+    assert np.all(colours.reshape(-1, 4)[:, 1] < 0.5), "the covered plate is shown green"
+    assert "2 failed" in bad.trimkit.check_report
+    import types
+    layout = RecordingLayout()
+    bpy.types.OBJECT_PT_trimkit.draw(types.SimpleNamespace(layout=layout),
+                                     types.SimpleNamespace(object=good, selected_objects=[good, bad]))
+    assert f"{bad.name}: 2 faces fail the check" in layout.labels, layout.labels
+    assert "    " + lines[0] in layout.labels and "    " + lines[1] in layout.labels
+    print(f"    covered hole: {lines[0]} (expected {ratio:.4f}x); {lines[1][:40]}...; good bracket all green")
+
+
+def test_units_report_the_file_unit_and_size_and_warn_on_implausible_sizes():
+    empty_scene()
+    text = BRACKET.read_text()
+    assert ",2HMM," in text  # the bracket's global section: unit flag 2, "MM"
+    mm = import_iges(BRACKET, split='MODEL')[0]
+    inch = import_iges(BRACKET, split='MODEL', units='INCH')[0]
+    metres = import_iges(BRACKET, split='MODEL', units='M')[0]
+    # make_samples.py: plate x 0..100, y 0..60; cylinder r 20 about (100, 60), z 0..40.
+    expected = (120.0, 80.0, 40.0)
+    assert all(abs(d / 0.001 - e) < 1e-3 for d, e in zip(mm.dimensions, expected)), tuple(mm.dimensions)
+    assert all(abs(i / m - 25.4) < 1e-4 for i, m in zip(inch.dimensions, mm.dimensions))
+    assert all(abs(d - e) < 1e-3 for d, e in zip(metres.dimensions, expected))
+    lines = mm.trimkit.import_report.splitlines()
+    assert lines == ["bracket.igs: unit mm (the file's), size 120 mm x 80 mm x 40 mm"], lines
+    assert mm["trimkit_unit"] == "mm" and inch["trimkit_unit"] == "inch"
+    lines = metres.trimkit.import_report.splitlines()
+    assert lines[0].startswith("bracket.igs: unit m (chosen; the file says mm), size 120 m x 80 m x 40 m"), lines
+    assert len(lines) == 2 and "is 120 m across, above 100 m" in lines[1], lines
+    assert "above" not in inch.trimkit.import_report and "below" not in inch.trimkit.import_report
+    labels = panel_labels(metres)
+    assert lines[1] in labels and "Size: 120 m x 80 m x 40 m" in labels and \
+        "Unit: m (chosen; the file says mm)" in labels, labels
+    print(f"    units: {mm.trimkit.import_report} | inch x{inch.dimensions[0] / mm.dimensions[0]:.4f} | {lines[1][:60]}")
+
+
+def uv_islands(obj):
+    """Per loop (u, v), the loops' world positions, and the CAD face of each triangle."""
+    import numpy as np
+    me = obj.data
+    assert all(p.loop_total == 3 for p in me.polygons)
+    uv = np.empty(2 * len(me.loops), np.float32)
+    me.uv_layers["UVMap"].data.foreach_get("uv", uv)
+    loops = np.empty(len(me.loops), np.int32)
+    me.loops.foreach_get("vertex_index", loops)
+    co = np.empty(3 * len(me.vertices), np.float32)
+    me.vertices.foreach_get("co", co)
+    m = np.array(obj.matrix_world)
+    world = co.reshape(-1, 3).astype(np.float64) @ m[:3, :3].T + m[:3, 3]
+    return uv.reshape(-1, 3, 2).astype(np.float64), world[loops].reshape(-1, 3, 3), read_face_values(obj, "cad_face")
+
+
+def overlapping_pixels(uv, faces, pixels=1024):
+    """Pixels whose centre lies strictly inside triangles of two different islands."""
+    import numpy as np
+    low, high = uv.reshape(-1, 2).min(0), uv.reshape(-1, 2).max(0)
+    size = (high - low).max() / pixels
+    owner = {}
+    overlaps = 0
+    covered = 0
+    for tri, face in zip(uv, faces.tolist()):
+        a, b, c = (tri - low) / size
+        lo = np.floor(np.minimum(np.minimum(a, b), c)).astype(int)
+        hi = np.ceil(np.maximum(np.maximum(a, b), c)).astype(int)
+        xs, ys = np.meshgrid(np.arange(lo[0], hi[0] + 1) + 0.5, np.arange(lo[1], hi[1] + 1) + 0.5)
+        p = np.stack([xs.ravel(), ys.ravel()], 1)
+        def side(q, r):
+            return (r[0] - q[0]) * (p[:, 1] - q[1]) - (r[1] - q[1]) * (p[:, 0] - q[0])
+        d1, d2, d3 = side(a, b), side(b, c), side(c, a)
+        eps = 1e-9
+        inside = ((d1 > eps) & (d2 > eps) & (d3 > eps)) | ((d1 < -eps) & (d2 < -eps) & (d3 < -eps))
+        for x, y in p[inside].astype(int).tolist():
+            other = owner.setdefault((x, y), face)
+            if other != face:
+                overlaps += 1
+                owner[(x, y)] = face
+            covered += 1
+    return overlaps, len(owner)
+
+
+def island_densities(uv, world, faces):
+    """{cad face: sqrt(UV area / world area)}: UV units per metre of each island."""
+    import numpy as np
+    e1, e2 = uv[:, 1] - uv[:, 0], uv[:, 2] - uv[:, 0]
+    uv_area = np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]) / 2
+    area = np.linalg.norm(np.cross(world[:, 1] - world[:, 0], world[:, 2] - world[:, 0]), axis=1) / 2
+    return {int(f): math.sqrt(uv_area[faces == f].sum() / area[faces == f].sum()) for f in np.unique(faces)}
+
+
+def test_hammer_uvs_are_real_world_scale_packed_without_overlap():
+    path = cad_sample("hammer.iges")
+    empty_scene()
+    objects = import_iges(path)
+    worst_spread, all_densities, overlap_total, islands = 0.0, [], 0, 0
+    for obj in objects:
+        assert obj.trimkit.uv_mode == 'REAL'
+        uv, world, faces = uv_islands(obj)
+        densities = island_densities(uv, world, faces)
+        all_densities += densities.values()
+        islands += len(densities)
+        overlaps, covered = overlapping_pixels(uv, faces)
+        assert covered > 1000, covered
+        overlap_total += overlaps
+    spread = max(all_densities) / min(all_densities)
+    import statistics
+    median = statistics.median(all_densities)
+    assert overlap_total == 0, f"{overlap_total} pixels covered by two islands"
+    assert spread < 2.0, spread
+    assert abs(median - 1.0) < 0.05, f"{median} UV units per metre, expected 1"
+    # The per-face option: every island fills 0-1.
+    empty_scene()
+    obj = import_iges(path, uv_mode='FACE')[0]
+    uv, _, faces = uv_islands(obj)
+    for f in sorted(set(faces.tolist()))[:5]:
+        island = uv[faces == f].reshape(-1, 2)
+        assert abs(island.min()) < 1e-6 and abs(island.max(0).max() - 1.0) < 1e-5, (f, island.min(0), island.max(0))
+    print(f"    hammer: {islands} islands, 0 overlapping pixels of 1024^2, density {min(all_densities):.3f}-"
+          f"{max(all_densities):.3f} UV/m (spread {spread:.3f}x, median {median:.4f})")
+
+
+def test_importer_conventions_files_metadata_presets_panels_select_and_reload():
+    import bmesh
+    import numpy as np
+    from trimkit import io
+    folder = TMP / "conventions"
+    folder.mkdir(parents=True, exist_ok=True)
+    for name in ("a.igs", "b.igs"):
+        shutil.copyfile(BRACKET, folder / name)
+    empty_scene()
+    before = set(bpy.data.objects)
+    assert bpy.ops.import_scene.trimkit_iges(directory=str(folder), files=[{"name": "a.igs"}, {"name": "b.igs"}],
+                                             split='MODEL') == {'FINISHED'}
+    objects = sorted((o for o in bpy.data.objects if o not in before), key=lambda o: o.name)
+    assert [o.name for o in objects] == ["a", "b"], [o.name for o in objects]
+    native = io.native()
+    model = native.read_model(str(folder / "a.igs"))
+    for o in objects:
+        assert o["trimkit_file"] == o.name + ".igs" and o["trimkit_path"] == str((folder / o["trimkit_file"]).resolve())
+        assert o["trimkit_unit"] == "mm" and o["trimkit_product"] == o.name
+        assert o["trimkit_cad_faces"] == len(model.faces) == 2
+        expected = 0.001 * native.model_diagonal(model)  # the default relative tolerance, in mm
+        assert abs(o["trimkit_tolerance"] / expected - 1) < 1e-9, (o["trimkit_tolerance"], expected)
+    presets = bpy.utils.preset_paths("operator/import_scene.trimkit_step")
+    names = {p.name for folder_ in presets for p in pathlib.Path(folder_).glob("*.py")}
+    assert {"Preview.py", "Render.py", "Export.py"} <= names, names
+    groups = [c for c in bpy.types.Panel.__subclasses__() if c.__name__.startswith("IMPORT_PT_trimkit_")]
+    assert sorted(c.bl_label for c in groups) == ["Mesh", "Objects", "Shading & UVs", "Units"], groups
+    assert all(c.bl_parent_id == "FILE_PT_operator" and c.bl_space_type == 'FILE_BROWSER' for c in groups)
+
+    # Select CAD Face / Select Similar CAD Faces in Edit Mode.
+    obj = objects[0]
+    faces = read_face_values(obj, "cad_face")
+    select_only([obj])
+    bpy.ops.object.mode_set(mode='EDIT')
+    bm = bmesh.from_edit_mesh(obj.data)
+    bm.faces.ensure_lookup_table()
+    for f in bm.faces:
+        f.select_set(False)
+    pick = int(np.flatnonzero(faces == 1)[0])
+    bm.faces.active = bm.faces[pick]
+    bmesh.update_edit_mesh(obj.data)
+    assert bpy.ops.mesh.trimkit_select_cad_face() == {'FINISHED'}
+    bpy.ops.object.mode_set(mode='OBJECT')
+    selected = polygon_values(obj.data, "select", bool)
+    assert selected.sum() == (faces == 1).sum() and np.all(faces[selected] == 1), (selected.sum(), (faces == 1).sum())
+    bpy.ops.object.mode_set(mode='EDIT')
+    assert bpy.ops.mesh.trimkit_select_similar_cad_faces(threshold=0.02) == {'FINISHED'}
+    bpy.ops.object.mode_set(mode='OBJECT')
+    assert set(faces[polygon_values(obj.data, "select", bool)].tolist()) == {1}  # the plate's area differs
+    bpy.ops.object.mode_set(mode='EDIT')
+    assert bpy.ops.mesh.trimkit_select_similar_cad_faces(kind_only=True) == {'FINISHED'}
+    bpy.ops.object.mode_set(mode='OBJECT')
+    kinds = {str(f.surface_kind) for f in model.faces}
+    expected = {0, 1} if len(kinds) == 1 else {1}
+    assert set(faces[polygon_values(obj.data, "select", bool)].tolist()) == expected, kinds
+
+    # Reload from Disk: a.igs replaced by another file; the object becomes what a fresh import gives.
+    sys.path.insert(0, str(ROOT / "tests" / "python"))
+    from iges_samples import write_stray_hole_plate
+    changed = write_stray_hole_plate(TMP / "changed.igs")
+    shutil.copyfile(changed, folder / "a.igs")
+    fresh = import_iges(folder / "a.igs", split='MODEL')[0]
+    select_only([obj])
+    assert bpy.ops.object.trimkit_reload() == {'FINISHED'}
+    assert stored_source_bytes(obj) == (folder / "a.igs").read_bytes()
+    assert (obj.trimkit.triangles, obj.trimkit.failed_faces) == (fresh.trimkit.triangles, fresh.trimkit.failed_faces), \
+        ((obj.trimkit.triangles, obj.trimkit.failed_faces), (fresh.trimkit.triangles, fresh.trimkit.failed_faces))
+    assert obj.trimkit.failed_faces == 1 and objects[1].trimkit.triangles != obj.trimkit.triangles
+    (folder / "a.igs").unlink()
+    message = expect_cancelled(bpy.ops.object.trimkit_reload)
+    assert "a.igs" in message and "cannot read" in message, message
+    print(f"    2 files in one import, metadata, 4 option groups, STEP presets; Select CAD Face: "
+          f"{int((faces == 1).sum())} faces; reload: {objects[1].trimkit.triangles} -> {obj.trimkit.triangles} "
+          f"triangles, {obj.trimkit.failed_faces} failed face; gone: {message.strip().splitlines()[-1][:60]}")
+
+
+def stored_source_bytes(obj):
+    from trimkit import stored_source
+    return stored_source.load(obj.trimkit.source)
+
+
+def test_hammer_lod_chain_decreases_and_each_level_is_within_its_tolerance():
+    import numpy as np
+    from trimkit import io, stored_source
+    path = cad_sample("hammer.iges")
+    empty_scene()
+    objects = import_iges(path)
+    obj = max(objects, key=lambda o: o.trimkit.triangles)
+    select_only([obj])
+    assert bpy.ops.object.trimkit_make_lods(count=3, factor=4.0) == {'FINISHED'}
+    chain = [bpy.data.objects[f"{obj.name}_LOD{k}"] for k in range(3)]
+    counts = [o.trimkit.triangles for o in chain]
+    assert counts[0] > counts[1] > counts[2] > 0, counts
+    assert counts == [len(o.data.polygons) for o in chain]
+    model = io.read_bytes(stored_source.load(obj.trimkit.source), obj.trimkit.source_name)
+    measured = []
+    for k, lod in enumerate(chain):
+        expected = obj.trimkit.tolerance * 4.0 ** k
+        assert abs(lod.trimkit.tolerance / expected - 1) < 1e-9 and lod.trimkit.lod_level == k
+        co = np.empty(3 * len(lod.data.vertices), np.float32)
+        lod.data.vertices.foreach_get("co", co)
+        tris = np.empty(3 * len(lod.data.polygons), np.int32)
+        lod.data.polygons.foreach_get("vertices", tris)
+        faces = io.part_faces(model, lod.trimkit.part, lod.trimkit.part_index)
+        report = io.measure(model, co.reshape(-1, 3) / lod.trimkit.scale, tris.reshape(-1, 3),
+                            read_face_values(lod, "cad_face"), faces if faces is not None else range(len(model.faces)))
+        t = expected / lod.trimkit.scale
+        measured.append((report.mesh_to_surface / t, report.surface_to_mesh / t))
+        # float32 positions in Blender: allow their rounding (1e-7 of the part's size) beyond T
+        slack = 1e-6 * float(np.abs(co).max()) / lod.trimkit.scale
+        assert report.mesh_to_surface <= t + slack and report.surface_to_mesh <= t + slack, (k, measured[-1])
+        assert list(lod.data.materials) == list(obj.data.materials)
+        assert lod.matrix_world == obj.matrix_world
+    assert obj.hide_get() and obj.trimkit.lod_report.startswith(f"LOD0 {counts[0]} triangles")
+    assert chain[1].trimkit.uv_layout == chain[0].trimkit.uv_layout
+    labels = panel_labels(obj)
+    assert any(l.startswith(f"LOD2 {counts[2]} triangles") for l in labels), labels
+    # Batch: --lods 3 on the bracket, levels printed finest first.
+    out = TMP / "lods.blend"
+    run = run_batch("--input", BRACKET, "--tolerance", "0.0005", "--relative", "--lods", "3", "--output", out)
+    assert run.returncode == 0 and out.exists(), run.stderr[-2000:]
+    line = [l for l in run.stdout.splitlines() if "LOD0" in l][0]
+    batch_counts = [int(part.split()[1]) for part in line.split(": ", 1)[1].split("; ")]
+    assert len(batch_counts) == 3 and batch_counts[0] > batch_counts[1] > batch_counts[2], line
+    run = run_batch("--input", BRACKET, "--tolerance", "0.001", "--lods", "3", "--output", TMP / "lods.glb")
+    assert run.returncode != 0 and "--lods needs a .blend output" in run.stderr, run.stderr
+    print(f"    hammer {obj.name} LODs {counts} triangles at T, 4T, 16T; deviations / T "
+          + ", ".join(f"{a:.2f}/{b:.2f}" for a, b in measured) + f"; batch bracket {batch_counts}")
+
+
+def test_unsupported_inputs_get_clear_messages():
+    empty_scene()
+    counts = scene_counts()
+    cases = {
+        "part.stl": (b"solid part\n facet normal 0 0 1\n  outer loop\n", "an STL mesh", "File > Import > STL"),
+        "part.obj": (b"# a mesh\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "a Wavefront OBJ mesh", "Wavefront"),
+        "empty.igs": (b"", "an empty file", "IGES (.igs, .iges), STEP"),
+        "scene.glb": (b"glTF\x02\x00\x00\x00" + bytes(40), "a glTF scene", "glTF 2.0"),
+    }
+    messages = []
+    for name, (data, what, hint) in cases.items():
+        path = TMP / name
+        path.write_bytes(data)
+        message = expect_cancelled(bpy.ops.import_scene.trimkit_iges, filepath=str(path))
+        assert f"{name}: {what}" in message and hint in message, message
+        assert "not an IGES file" not in message
+        assert scene_counts() == counts
+        messages.append(message.strip().splitlines()[-1])
+    from trimkit import io
+    brep = pathlib.Path(ARGS.cad) / "brep" / "bottle.brep"
+    if io.has_step() and brep.exists():  # a .brep through the IGES importer is read as what it is
+        objects = import_iges(brep)
+        assert objects and all(o.trimkit.triangles > 0 for o in objects)
+    run = run_batch("--help")
+    assert run.returncode == 0 and "IGES, STEP or .brep file" in run.stdout and "IGES file " not in run.stdout
+    tbp = TMP / "solid.tbp"
+    tbp.write_text('{"tbp": 1, "degree": 3, "patches": []}')
+    message = expect_cancelled(bpy.ops.import_scene.trimkit_iges, filepath=str(tbp))
+    assert "a TBP solid" in message and "TBP (.tbp) [trimkit]" in message, message
+    print("    " + "\n    ".join(m[:110] for m in messages))
+
+
+def test_screenshots_of_panel_import_options_and_checked_assembly():
+    """Blender with a window under Xvfb (tests/blender/screenshots.py) writes three
+    screenshots into --out; each must exist at the window's size and not be blank."""
+    import numpy as np
+    xvfb = shutil.which("xvfb-run")
+    if xvfb is None:
+        raise Skip("xvfb-run not installed (apt-get install xvfb)")
+    try:
+        source = step_sample("as1-oc-214-mat.stp")
+    except Skip:
+        source = BRACKET
+    out = pathlib.Path(ARGS.out)
+    empty_scene()
+    start = TMP / "screenshots" / "start.blend"  # opening a file skips the splash screen
+    start.parent.mkdir(parents=True, exist_ok=True)
+    assert bpy.ops.wm.save_as_mainfile(filepath=str(start)) == {'FINISHED'}
+    command = [xvfb, "-a", "-s", "-screen 0 1600x1000x24", bpy.app.binary_path, "--factory-startup",
+               "-p", "0", "0", "1600", "1000", str(start), "--python", str(ROOT / "tests" / "blender" / "screenshots.py"),
+               "--", "--out", str(out), "--input", str(source), "--browse", str(BRACKET)]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    lines = [l for l in run.stdout.splitlines() if l.startswith("screenshots:")]
+    assert run.returncode == 0 and "screenshots: done" in lines, (run.returncode, run.stdout[-3000:], run.stderr[-2000:])
+    sizes = {}
+    for name in ("checked_assembly.png", "panel.png", "import_options.png"):
+        image = bpy.data.images.load(str(out / name))
+        pixels = np.empty(4 * image.size[0] * image.size[1], np.float32)
+        image.pixels.foreach_get(pixels)
+        rgb = pixels.reshape(-1, 4)[:, :3]
+        sizes[name] = tuple(image.size)
+        assert image.size[0] >= 200 and image.size[1] >= 200, (name, tuple(image.size))
+        assert rgb.std(axis=0).max() > 0.05, f"{name} looks blank"
+        if name == "checked_assembly.png":  # the check's green faces are on screen
+            green = np.sum((rgb[:, 1] > 0.5) & (rgb[:, 0] < 0.3) & (rgb[:, 2] < 0.3))
+            assert green > 2000, f"{name}: {green} green pixels"
+        bpy.data.images.remove(image)
+    print("    " + ", ".join(f"{n} {w}x{h}" for n, (w, h) in sizes.items()) + f" in {out}")
 
 
 def main():

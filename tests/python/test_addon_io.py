@@ -13,7 +13,7 @@ from trimkit import io  # noqa: E402  (the package's __init__ imports no bpy)
 def test_one_part_per_face_with_uvs_normalized_per_face(bracket):
     model, data = io.read_source(bracket)
     assert data.startswith(b"trimkit built-in sample")
-    result = io.tessellate(model, 0.05, scale=1e-3, split="FACE")
+    result = io.tessellate(model, 0.05, scale=1e-3, split="FACE", uv_mode="FACE")
     assert [p.name for p in result.parts] == ["Face.0", "Face.1"]
     assert sum(len(p.triangles) for p in result.parts) == result.triangles
     for part in result.parts:
