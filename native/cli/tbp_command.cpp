@@ -26,6 +26,18 @@
 namespace trimkit::cli {
 namespace {
 
+// f() with a geom::InvalidInput from the solid or mesh read from `path` (a patch
+// without area, a vertex without a normal) turned into ReadError(path, ...), so the
+// error line names the input file: "trimkit: FILE: pn_triangles: vertex 0 ...".
+template <class F>
+auto naming_input(const std::string& path, F&& f) {
+    try {
+        return f();
+    } catch (const geom::InvalidInput& e) {
+        throw geom::ReadError(path, 0, e.what());
+    }
+}
+
 const char* const kTbpUsage =
     "trimkit tbp mesh SOLID.tbp -o OUT [--levels L] [--lod K] [--json]\n"
     "       trimkit tbp intersect A.tbp B.tbp [--levels L] [--lod K] [--json] [--no-hierarchy]\n"
@@ -58,7 +70,7 @@ int run_mesh_tbp(const std::vector<std::string>& argv) {
     o.level = count_option(args, "--levels", 2, 0, 12);
     o.lod = count_option(args, "--lod", 3, 0, 63);
     o.keep_split_normals = true;
-    const mesh::Mesh m = tbp::polygonize(solid, o);
+    const mesh::Mesh m = naming_input(args.positionals()[0], [&] { return tbp::polygonize(solid, o); });
     io::write_mesh(output_path(args), m);
     mesh::WeldOptions weld;  // open edges counted on positions only (split normals are not cracks)
     mesh::Mesh positions_only;
@@ -210,11 +222,11 @@ int run_from_mesh(const std::vector<std::string>& argv) {
     const std::string out = output_path(args);
     const mesh::Mesh cage = io::read_mesh(args.positionals()[0]);
     if (scheme == "pn") {
-        const tbp::TbpSolid solid = tbp::pn_triangles(cage);
+        const tbp::TbpSolid solid = naming_input(args.positionals()[0], [&] { return tbp::pn_triangles(cage); });
         io::write_tbp(solid, out);
         std::cout << solid.patches.size() << " cubic PN patches -> " << out << "\n";
     } else {
-        const tbp::LoopConversion c = tbp::loop_quartics(cage);
+        const tbp::LoopConversion c = naming_input(args.positionals()[0], [&] { return tbp::loop_quartics(cage); });
         io::write_tbp(c.solid, out);
         std::printf("%zu quartic Loop patches -> %s; %d irregular patches approximated, max error %.6g\n",
                     c.solid.patches.size(), out.c_str(), c.approximated, c.max_error);
