@@ -405,7 +405,7 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
 // first), replaced by this one's.
 TessellationResult tessellate_pass(const geom::Model& model, const TessellationOptions& options,
                                    const FaceScales& scales, std::vector<FaceArea>* areas, PassState& state) {
-    const PassState previous = std::move(state);
+    PassState previous = std::move(state);  // its unchanged faces' outputs are moved on
     const bool has_previous = !previous.outputs.empty();
     state = PassState{scales, std::vector<double>(model.edges.size(), 0.0), {}, {}, {}, {}};
     TessellationResult result;
@@ -506,7 +506,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     parallel_for(static_cast<int>(model.faces.size()), threads, [&](int f) {
         FaceOutput& out = outputs[f];
         if (unchanged(f)) {
-            out = previous.outputs[f];
+            out = std::move(previous.outputs[f]);
             out.timings = FaceTimings{};
             out.trim_seconds = out.verify_seconds = 0.0;
             return;
@@ -547,7 +547,9 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
             continue;
         }
         if (out.mesh.triangle_count() == 0) continue;
-        (*areas)[f] = FaceArea{mesh::surface_area(out.mesh), out.trim_loss, out.cell_loss,
+        // verify_face measured the accepted mesh's area already.
+        const double area = out.verification ? out.verification->area_mesh : mesh::surface_area(out.mesh);
+        (*areas)[f] = FaceArea{area, out.trim_loss, out.cell_loss,
                               static_cast<int>(out.mesh.triangle_count()), boundary_edge_count(out.mesh)};
         ++result.faces_meshed;
         mesh::append(result.mesh, out.mesh);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geom/analytic_surfaces.h"
+#include "geom/face.h"
 #include "mesh/mesh.h"
 #include "tess/tessellate_model.h"
 
@@ -82,15 +83,7 @@ geom::Model tube() {
     geom::Face face;
     face.surface = geom::cylinder_patch({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1.0, 0.0, 2 * M_PI, 0.0, 10.0);
     face.surface_kind = "cylinder";
-    geom::Loop loop;
-    loop.outer = true;
-    const Eigen::Vector2d corners[4] = {{0, 0}, {2 * M_PI, 0}, {2 * M_PI, 10}, {0, 10}};
-    for (int i = 0; i < 4; ++i) {
-        geom::Coedge c;
-        c.curve = geom::NurbsCurve2d(1, {0, 0, 1, 1}, {corners[i], corners[(i + 1) % 4]});
-        loop.coedges.push_back(c);
-    }
-    face.loops.push_back(loop);
+    face.loops.push_back(geom::natural_boundary_loop(face.surface));
     model.faces.push_back(face);
     model.bodies.push_back({"tube", {0}, false});
     return model;

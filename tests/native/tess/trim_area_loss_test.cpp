@@ -5,6 +5,7 @@
 
 #include "geom/nurbs_curve.h"
 #include "geom/nurbs_surface.h"
+#include "geom/face.h"
 #include "geom/model.h"
 #include "tess/tessellate_model.h"
 #include "tess/trim_area_loss.h"
@@ -62,15 +63,7 @@ geom::Model bowed_face(double k) {
     geom::Face face;
     face.surface = geom::NurbsSurface(2, 1, {-1, -1, -1, 1, 1, 1}, {0, 0, 1, 1}, 3, 2,
                                       {{-1, k, 0}, {-1, 1, 0}, {0, -k, 0}, {0, 1, 0}, {1, k, 0}, {1, 1, 0}});
-    geom::Loop loop;
-    loop.outer = true;
-    const Eigen::Vector2d corners[4] = {{-1, 0}, {1, 0}, {1, 1}, {-1, 1}};
-    for (int i = 0; i < 4; ++i) {
-        geom::Coedge c;
-        c.curve = geom::NurbsCurve2d(1, {0, 0, 1, 1}, {corners[i], corners[(i + 1) % 4]});
-        loop.coedges.push_back(c);
-    }
-    face.loops.push_back(loop);
+    face.loops.push_back(geom::natural_boundary_loop(face.surface));
     model.faces.push_back(face);
     return model;
 }
