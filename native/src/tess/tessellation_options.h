@@ -32,6 +32,8 @@ struct TessellationOptions {
 //    of their own crossings) (kd_subdivision; the offset bound is computed from the
 //    chords, so cells take what the trims leave), and <= interior_tolerance;
 //  - cells no trim meets (only vertices on S): bound <= interior_tolerance.
+// tessellate_model meshes each face to 0.9 T with these shares and joins the faces
+// by moving boundary points by at most the remaining 0.1 T (its kWeldShare).
 constexpr double kTrimToleranceShare = 0.25;
 // Cells could take all that the trims leave (T away from the trims); they take this
 // share because the area a mesh loses against a curved surface grows with the chord

@@ -242,7 +242,8 @@ TEST(TessellateModel, FaceThatCannotBeMeshedCorrectlyIsReportedNotAppended) {
         EXPECT_NEAR(failed.area_exact, 5.0 * M_PI, 5e-3);
         EXPECT_TRUE(std::isfinite(failed.area_mesh));
         EXPECT_TRUE(std::isfinite(failed.boundary_gap));
-        EXPECT_GT(failed.boundary_bound, 0.01);
+        // Faces are verified at the tolerance they are meshed to, 0.9 T.
+        EXPECT_GT(failed.boundary_bound, 0.9 * 0.01);
         const std::set<std::int32_t> ids(r.mesh.face_ids.begin(), r.mesh.face_ids.end());
         EXPECT_EQ(ids, std::set<std::int32_t>{0});
         EXPECT_NEAR(mesh::surface_area(r.mesh), plate_area(), 0.01);
