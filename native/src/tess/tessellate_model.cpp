@@ -35,16 +35,10 @@ using Clock = std::chrono::steady_clock;
 // one point when joining and repairing loops (far above double rounding of the
 // parameters, far below any trim segment the approximation makes).
 constexpr double kSnapUvRelative = 1e-9;
-// Joining the faces by position (snap_boundary_vertices, close_t_junctions) moves
-// mesh points by up to the weld distance, kWeldShare of the tolerance, so that share
-// is kept back: the faces are meshed to (1 - kWeldShare) T, and a point the join
-// moves stays within T. (Snapping within T on top of a mesh that spends T put
-// hammer.iges 1.29 T off at 0.016 of its diagonal.) Models with shared edges meet
-// exactly along edges and at their vertices (edge ends are unified,
-// unify_edge_ends), so their snap only mops up what the file's topology misses;
-// loose trimmed surfaces close the gaps between their own trim polylines, each
-// within its trim tolerance of its curve.
-constexpr double kWeldShare = 0.1;
+// Models with shared edges meet exactly along edges and at their vertices (edge ends
+// are unified, unify_edge_ends), so their snap (within kWeldShare T) only mops up
+// what the file's topology misses; loose trimmed surfaces close the gaps between
+// their own trim polylines, each within its trim tolerance of its curve.
 // Consecutive trim points closer than this fraction of the tolerance (in 3D) are one
 // point: joints of coedges that meet up to rounding (1e-12 apart) would otherwise
 // leave zero-length boundary segments that no face on the other side matches.
@@ -605,7 +599,7 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
     validate(options);
     const double weld_distance = kWeldShare * options.tolerance;
     TessellationOptions face_options = options;
-    face_options.tolerance = options.tolerance - weld_distance;
+    face_options.tolerance = face_tolerance(options);
     const std::vector<std::vector<int>> groups = area_groups(model);
     const std::vector<double> ones(model.faces.size(), 1.0);
     FaceScales scale{ones, ones};
