@@ -1,0 +1,110 @@
+// fit/compress_model and extend_model on models built in the test ([Muraki] Sec. 4):
+// a planar face with holes, a concave face, and a face between two G1 neighbours
+// with a hole across a shared edge. Each rebuilt face is measured as Sec. 4.4 does
+// and, along its G1 edges, against its neighbours' normals.
+#include "fit/compress_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fit/edge_faces.h"
+#include "fit/extend_model.h"
+#include "fit_models.h"
+#include "geom/surface_projector.h"
+
+namespace trimkit::fit {
+namespace {
+
+constexpr int kG1Samples = 50;
+constexpr double kG1MaxDegrees = 0.5;
+
+// Largest angle (degrees) between the rebuilt face's normal and its neighbour's along
+// every coedge the rule marks G1, at kG1Samples points of each edge.
+double max_g1_angle(const geom::Model& extended, int face, const FitRule& rule) {
+    const EdgeFaces uses = edge_faces(extended);
+    const geom::SurfaceProjector own(extended.faces[face].surface);
+    double worst = 0;
+    for (std::size_t l = 0; l < rule.g1.size(); ++l)
+        for (std::size_t c = 0; c < rule.g1[l].size(); ++c) {
+            if (!rule.g1[l][c]) continue;
+            const int n = neighbour_face(extended, uses, face, static_cast<int>(l), static_cast<int>(c));
+            const geom::SurfaceProjector other(extended.faces[n].surface);
+            const geom::NurbsCurve3d& e = *extended.edges[extended.faces[face].loops[l].coedges[c].edge].curve;
+            for (int k = 0; k < kG1Samples; ++k) {
+                const Eigen::Vector3d x = e.evaluate(e.domain().first + (e.domain().second - e.domain().first) * k / (kG1Samples - 1));
+                const Eigen::Vector2d a = own.invert(x), b = other.invert(x);
+                const double dot = std::abs(own.surface().normal(a.x(), a.y()).dot(other.surface().normal(b.x(), b.y())));
+                worst = std::max(worst, std::acos(std::min(1.0, dot)) * 180 / M_PI);
+            }
+        }
+    return worst;
+}
+
+// The rebuilt face measured against the source as Sec. 4.4 does.
+FitError rebuilt_error(const geom::Model& source, const geom::Model& extended, int face) {
+    return evaluate_fit(source.faces[face], source.edges, extended.faces[face].surface);
+}
+
+TEST(CompressModel, PlanarFaceWithHolesIsRebuiltExactly) {
+    const geom::Model m = test::plate_with_holes();
+    std::vector<FaceCompression> report;
+    const CompressedModel c = compress_model(m, {}, &report);
+    ASSERT_TRUE(report[0].compressed) << report[0].reason;
+    EXPECT_EQ(report[0].g1_edges, 0);
+    const geom::Model e = extend_model(c);
+    const FitError error = rebuilt_error(c.model, e, 0);
+    EXPECT_GT(error.grid_points, 300);  // 441 grid points less the holes
+    EXPECT_LT(error.max(), 1e-9 * error.box_diagonal) << "a plane is in the fitter's space";
+    EXPECT_EQ(e.faces[0].loops.size(), 3u);
+}
+
+TEST(CompressModel, ConcaveFaceIsWithinOnePercent) {
+    const geom::Model m = test::concave_face();
+    std::vector<FaceCompression> report;
+    const CompressedModel c = compress_model(m, {}, &report);
+    ASSERT_TRUE(report[0].compressed) << report[0].reason;
+    const FitError error = rebuilt_error(c.model, extend_model(c), 0);
+    std::printf("concave face: avg %.3g max %.3g ratio %.4f%% (%d grid points)\n", error.surface_avg, error.max(),
+                100 * error.ratio(), error.grid_points);
+    EXPECT_LE(error.max(), report[0].tolerance);
+    EXPECT_LT(error.ratio(), 0.01);
+}
+
+TEST(CompressModel, FaceBetweenTwoG1NeighboursKeepsG1) {
+    const geom::Model m = test::g1_strip();
+    CompressOptions options;
+    options.faces = {1};
+    std::vector<FaceCompression> report;
+    const CompressedModel c = compress_model(m, options, &report);
+    ASSERT_TRUE(report[1].compressed) << report[1].reason;
+    EXPECT_FALSE(report[0].compressed);
+    EXPECT_FALSE(report[2].compressed);
+    // Judged G1: the left edge (to face 0) and both pieces of the right edge (to face 2).
+    const std::vector<bool> expected = {false, true, false, true, false, true};
+    EXPECT_EQ(report[1].rule.g1[0], expected);
+    const geom::Model e = extend_model(c);
+    const double angle = max_g1_angle(e, 1, report[1].rule);
+    const FitError error = rebuilt_error(c.model, e, 1);
+    std::printf("G1 face: max G1 angle %.4f deg, error avg %.3g max %.3g ratio %.4f%%\n", angle, error.surface_avg,
+                error.max(), 100 * error.ratio());
+    EXPECT_LT(angle, kG1MaxDegrees);
+    EXPECT_LE(error.max(), report[1].tolerance);
+    // Kept faces are untouched.
+    EXPECT_EQ(e.faces[0].surface.points(), m.faces[0].surface.points());
+}
+
+TEST(CompressModel, AbsoluteToleranceBelowTheFitKeepsTheSurface) {
+    const geom::Model m = test::concave_face();
+    CompressOptions options;
+    options.tolerance = 1e-9;
+    std::vector<FaceCompression> report;
+    const CompressedModel c = compress_model(m, options, &report);
+    EXPECT_FALSE(report[0].compressed);
+    EXPECT_FALSE(c.rules[0].has_value());
+    EXPECT_NE(report[0].reason.find("max error"), std::string::npos) << report[0].reason;
+    EXPECT_EQ(c.model.faces[0].loops[0].coedges[0].edge, m.faces[0].loops[0].coedges[0].edge);
+}
+
+}  // namespace
+}  // namespace trimkit::fit
