@@ -1,6 +1,8 @@
 #include "fit/coedge_edges.h"
 
+#include <algorithm>
 #include <optional>
+#include <vector>
 
 #include "fit/fit_curve.h"
 
@@ -20,18 +22,28 @@ std::optional<geom::NurbsCurve3d> edge_curve(const geom::NurbsSurface& S, const 
     for (const int count : kCurveCounts) {
         CurveFitProblem problem;
         problem.count = count;
+        problem.smoothing = 0;  // samples are plenty (kSamplesPerPoint per control point); the energy would bias them
         const int m = kSamplesPerPoint * count;
+        // Chord-length parameters: rational arcs are only C1 in their own parameter
+        // at their knots, which a uniform-knot cubic follows slowly; in arc length
+        // the image is as smooth as its geometry.
+        std::vector<Eigen::Vector3d> mid;
         for (int k = 0; k <= m; ++k) {
-            problem.params.push_back(static_cast<double>(k) / m);
             problem.points.push_back(image(static_cast<double>(k) / m));
+            if (k < m) mid.push_back(image((k + 0.5) / m));
         }
+        std::vector<double> length(m + 1, 0.0);
+        for (int k = 1; k <= m; ++k)
+            length[k] = length[k - 1] + (problem.points[k] - mid[k - 1]).norm() + (mid[k - 1] - problem.points[k - 1]).norm();
+        if (!(length[m] > 0)) return std::nullopt;  // a degenerate (zero-length) coedge
+        for (int k = 0; k <= m; ++k) problem.params.push_back(k == m ? 1.0 : length[k] / length[m]);
         problem.start = problem.points.front();
         problem.end = problem.points.back();
         const geom::NurbsCurve3d curve = fit_curve(problem);
         double worst = 0;
         for (int k = 0; k < m; ++k) {
-            const double s = (k + 0.5) / m;
-            worst = std::max(worst, (curve.evaluate(s) - image(s)).norm());
+            const double s = (length[k] + (mid[k] - problem.points[k]).norm()) / length[m];
+            worst = std::max(worst, (curve.evaluate(s) - mid[k]).norm());
         }
         if (worst <= tolerance) return curve;
     }

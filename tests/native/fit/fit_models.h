@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <stdexcept>
 
 #include "fit/coedge_edges.h"
 #include "geom/analytic_curves.h"
@@ -14,7 +15,7 @@
 
 namespace trimkit::fit::test {
 
-constexpr double kEdgeFit = 1e-6;
+constexpr double kEdgeFit = 1e-5;
 
 inline geom::Loop polygon_loop(const std::vector<Eigen::Vector2d>& corners, bool outer) {
     geom::Loop loop;
@@ -41,7 +42,8 @@ inline geom::Loop circle_hole(const Eigen::Vector2d& c, double r) {
 inline void add_face(geom::Model& m, geom::Face f) {
     m.faces.push_back(std::move(f));
     m.free_faces.push_back(static_cast<int>(m.faces.size()) - 1);
-    fit::add_coedge_edges(m, static_cast<int>(m.faces.size()) - 1, kEdgeFit);
+    if (!fit::add_coedge_edges(m, static_cast<int>(m.faces.size()) - 1, kEdgeFit))
+        throw std::runtime_error("fit_models: an edge curve does not fit within kEdgeFit");
 }
 
 // 10 x 6 plate in the plane z = x/10 + 2 with two round holes.

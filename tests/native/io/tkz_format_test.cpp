@@ -1,0 +1,114 @@
+// io/tkz_format and io/write_iges: the compress -> .tkz -> extend round trip
+// ([Muraki] Sec. 2-3) and hostile .tkz input (truncations, huge counts, bad indices).
+#include "io/tkz_format.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "fit/evaluate_fit.h"
+#include "fit/extend_model.h"
+#include "fit/fit_models.h"
+#include "geom/error.h"
+#include "io/read_iges.h"
+#include "io/write_iges.h"
+
+namespace trimkit::io {
+namespace {
+
+// The G1 strip with the plate beside it: 4 faces, some compressed, some kept.
+geom::Model mixed_model() {
+    geom::Model m = fit::test::g1_strip();
+    const geom::Model plate = fit::test::plate_with_holes();
+    geom::Face f = plate.faces[0];
+    const int offset = static_cast<int>(m.edges.size());
+    for (auto& loop : f.loops)
+        for (auto& c : loop.coedges) c.edge += offset;
+    m.edges.insert(m.edges.end(), plate.edges.begin(), plate.edges.end());
+    m.faces.push_back(f);
+    m.free_faces.push_back(3);
+    return m;
+}
+
+bool same_surface(const geom::NurbsSurface& a, const geom::NurbsSurface& b) {
+    return a.points() == b.points() && a.knots_u() == b.knots_u() && a.knots_v() == b.knots_v() &&
+           a.weights() == b.weights() && a.degree_u() == b.degree_u() && a.degree_v() == b.degree_v();
+}
+
+TEST(Tkz, RoundTripRebuildsCompressedFacesAndKeepsTheOthersBitForBit) {
+    const geom::Model m = mixed_model();
+    std::vector<fit::FaceCompression> report;
+    const fit::CompressedModel c = fit::compress_model(m, {}, &report);
+    int compressed = 0;
+    for (const auto& r : report) compressed += r.compressed;
+    ASSERT_GE(compressed, 2);
+    ASSERT_LT(compressed, 4) << "G1 neighbours of a compressed face keep their surface";
+    const std::string bytes = tkz_bytes(c);
+    const fit::CompressedModel back = read_tkz_bytes(bytes, "mixed.tkz");
+    ASSERT_EQ(back.model.faces.size(), m.faces.size());
+    EXPECT_EQ(tkz_bytes(back), bytes) << "reading and writing again gives the same bytes";
+    const geom::Model e = fit::extend_model(back);
+    const geom::Model direct = fit::extend_model(c);
+    for (std::size_t f = 0; f < m.faces.size(); ++f) {
+        if (report[f].compressed) {
+            EXPECT_TRUE(same_surface(e.faces[f].surface, direct.faces[f].surface)) << "face " << f << ": same refit";
+            const fit::FitError err = fit::evaluate_fit(c.model.faces[f], c.model.edges, e.faces[f].surface);
+            EXPECT_LE(err.max(), report[f].tolerance) << "face " << f;
+        } else {
+            EXPECT_TRUE(same_surface(e.faces[f].surface, m.faces[f].surface)) << "face " << f;
+            EXPECT_EQ(e.faces[f].loops[0].coedges[0].curve.points(), m.faces[f].loops[0].coedges[0].curve.points());
+        }
+    }
+    // Compressed smaller than the same file with every surface kept.
+    const fit::CompressedModel kept{c.model, std::vector<std::optional<fit::FitRule>>(m.faces.size())};
+    EXPECT_LT(bytes.size(), tkz_bytes(kept).size());
+}
+
+TEST(Tkz, ExtendedModelWrittenAsIgesReadsBackWithinTolerance) {
+    const geom::Model m = mixed_model();
+    std::vector<fit::FaceCompression> report;
+    const fit::CompressedModel c = fit::compress_model(m, {}, &report);
+    const geom::Model e = fit::extend_model(read_tkz_bytes(tkz_bytes(c), "mixed.tkz"));
+    const geom::Model back = read_iges_text(iges_text(e, "mixed.igs"), "mixed.igs");
+    ASSERT_EQ(back.faces.size(), m.faces.size());
+    for (std::size_t f = 0; f < m.faces.size(); ++f) {
+        EXPECT_EQ(back.faces[f].loops.size(), m.faces[f].loops.size()) << "face " << f;
+        const fit::FitError err = fit::evaluate_fit(c.model.faces[f], c.model.edges, back.faces[f].surface);
+        if (report[f].compressed) EXPECT_LE(err.max(), report[f].tolerance) << "face " << f;
+        else EXPECT_TRUE(same_surface(back.faces[f].surface, m.faces[f].surface)) << "face " << f << " kept";
+    }
+}
+
+void expect_read_error(const std::string& bytes, const std::string& needle) {
+    try {
+        read_tkz_bytes(bytes, "bad.tkz");
+        ADD_FAILURE() << "no error for " << needle;
+    } catch (const geom::ReadError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("bad.tkz: ", 0), 0u) << e.what();
+        EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+}
+
+TEST(Tkz, HostileInputGivesAClearError) {
+    std::vector<fit::FaceCompression> report;
+    const std::string good = tkz_bytes(fit::compress_model(fit::test::plate_with_holes(), {}, &report));
+    expect_read_error("", "truncated");
+    expect_read_error("IGES" + good.substr(4), "not a .tkz file");
+    for (std::size_t n = 0; n < good.size(); n += 7) {
+        EXPECT_THROW(read_tkz_bytes(good.substr(0, n), "bad.tkz"), geom::ReadError) << n;
+    }
+    // The edge count (after magic, version, units "mm" and the scale) set to 2^32 - 1.
+    std::string huge = good;
+    const std::size_t at = 4 + 4 + 4 + 2 + 8;
+    std::memset(&huge[at], 0xff, 4);
+    expect_read_error(huge, "edge count");
+    // The first edge's curve point count set to 2^31.
+    std::string points = good;
+    const std::size_t count_at = at + 4 + 1 + 1;
+    std::memcpy(&points[count_at], "\x00\x00\x00\x80", 4);
+    expect_read_error(points, "bytes are left");
+    expect_read_error(good + "x", "after the end");
+}
+
+}  // namespace
+}  // namespace trimkit::io
