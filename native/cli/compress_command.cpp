@@ -33,9 +33,9 @@ std::string face_line(int f, const fit::FaceCompression& c) {
 }  // namespace
 
 int run_compress(const std::vector<std::string>& argv) {
-    const Arguments args(argv, {}, {"-o", "--tolerance"});
+    const Arguments args(argv, {}, {"--output", "--tolerance"});
     args.expect_positionals(1, kCompressUsage);
-    if (!args.has("-o")) throw UsageError(std::string("missing -o OUT.tkz; usage: ") + kCompressUsage);
+    if (!args.has("--output")) throw UsageError(std::string("missing -o OUT.tkz; usage: ") + kCompressUsage);
     fit::CompressOptions options;
     options.tolerance = args.number("--tolerance", 0.0);
     if (args.has("--tolerance") && !(options.tolerance > 0))
@@ -54,7 +54,7 @@ int run_compress(const std::vector<std::string>& argv) {
     fit::CompressedModel all_kept{compressed.model, std::vector<std::optional<fit::FitRule>>(model.faces.size())};
     const std::size_t kept_bytes = io::tkz_bytes(all_kept).size();
     const auto source_bytes = std::filesystem::file_size(path);
-    io::write_tkz(compressed, args.value("-o", ""));
+    io::write_tkz(compressed, args.value("--output", ""));
     std::printf("faces: %d of %zu compressed, max error %.4g\n", count, report.size(), worst);
     std::printf("bytes: source %ju, tkz with every surface kept %zu, tkz %zu\n", static_cast<std::uintmax_t>(source_bytes),
                 kept_bytes, bytes.size());

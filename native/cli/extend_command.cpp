@@ -13,9 +13,9 @@ namespace trimkit::cli {
 
 int run_extend(const std::vector<std::string>& argv) {
     const char* const usage = "trimkit extend IN.tkz -o MODEL.igs";
-    const Arguments args(argv, {}, {"-o"});
+    const Arguments args(argv, {}, {"--output"});
     args.expect_positionals(1, usage);
-    const std::string out = args.value("-o", "");
+    const std::string out = args.value("--output", "");
     const std::string ext = std::filesystem::path(out).extension().string();
     if (out.empty() || (ext != ".igs" && ext != ".iges"))
         throw UsageError(std::string("expected -o MODEL.igs; usage: ") + usage);
