@@ -51,7 +51,7 @@ int run_compress(const std::vector<std::string>& argv) {
         if (report[f].compressed) ++count, worst = std::max(worst, report[f].error.max());
     }
     const std::string bytes = io::tkz_bytes(compressed);
-    fit::CompressedModel all_kept{compressed.model, std::vector<std::optional<fit::FitRule>>(model.faces.size())};
+    fit::CompressedModel all_kept{model, std::vector<std::optional<fit::FitRule>>(model.faces.size())};
     const std::size_t kept_bytes = io::tkz_bytes(all_kept).size();
     const auto source_bytes = std::filesystem::file_size(path);
     io::write_tkz(compressed, args.value("--output", ""));

@@ -1,10 +1,9 @@
 // Error evaluation of a fitted surface against the face it replaces ([Muraki]
 // Sec. 4.4, Tab. 1): a 21 x 21 grid (20 sections each way) on the source surface,
 // the grid points inside the outer loop projected onto the fitted surface
-// (closest point), and the face's boundary edges sampled and projected the same
-// way; average and maximum distances, and the maximum's ratio to the face's box.
-// Departure: the grid spans the outer loop's (u, v) box rather than the whole
-// surface domain, so a small face on a large surface still gets ~400 points.
+// (closest point, surface_deviation), and the face's boundary edges sampled and
+// projected the same way; average and maximum distances, and the maximum's ratio
+// to the face's box.
 #pragma once
 
 #include <vector>
@@ -12,8 +11,6 @@
 #include "geom/model.h"
 
 namespace trimkit::fit {
-
-constexpr int kErrorGridSections = 20;
 
 struct FitError {
     double surface_avg = 0, surface_max = 0;  // grid points -> fitted surface
