@@ -61,6 +61,28 @@ bool fitted_reversed(const geom::Face& source, const geom::NurbsSurface& fitted)
     return fitted.normal(st.x(), st.y()).dot(n) < 0;
 }
 
+// Numbers (doubles) a face's geometry costs stored: its surface and trim curves when
+// kept; the 3D curves of the edges it adds when compressed (the rule is a few bytes).
+template <int Dim>
+std::size_t numbers(const geom::NurbsCurve<Dim>& c) {
+    return c.knots().size() + c.points().size() * (Dim + (c.is_rational() ? 1 : 0));
+}
+
+std::size_t kept_numbers(const geom::Face& f) {
+    const geom::NurbsSurface& s = f.surface;
+    std::size_t n = s.knots_u().size() + s.knots_v().size() + s.points().size() * (s.is_rational() ? 4 : 3);
+    for (const geom::Loop& loop : f.loops)
+        for (const geom::Coedge& c : loop.coedges) n += numbers(c.curve);
+    return n;
+}
+
+std::size_t added_numbers(const std::vector<geom::Edge>& before, const std::vector<geom::Edge>& after) {
+    std::size_t n = 0;
+    for (std::size_t e = 0; e < after.size(); ++e)
+        if (after[e].curve && (e >= before.size() || !before[e].curve)) n += numbers(*after[e].curve);
+    return n;
+}
+
 std::string figure(double x) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3g", x);
@@ -131,8 +153,15 @@ CompressedModel compress_model(const geom::Model& model, const CompressOptions& 
         bool blocked = false;
         for (const int n : g1_neighbours)
             if (result.rules[n]) blocked = true;
-        if (blocked) out.reason = "a G1 neighbour is compressed";
-        else if (try_rules(m, f, out)) {
+        if (blocked) {
+            out.reason = "a G1 neighbour is compressed";
+        } else if (!try_rules(m, f, out)) {
+            // out.reason says why
+        } else if (added_numbers(edges_before, m.edges) >= kept_numbers(before)) {
+            out.reason = "its new edge curves (" + std::to_string(added_numbers(edges_before, m.edges)) +
+                         " numbers) cost more than its surface and trim curves (" +
+                         std::to_string(kept_numbers(before)) + ")";
+        } else {
             out.compressed = true;
             result.rules[f] = out.rule;
             for (const int n : g1_neighbours) pinned[n] = true;

@@ -125,7 +125,7 @@ struct Reader {
     template <int Dim>
     geom::NurbsCurve<Dim> curve(const char* what) {
         const int p = degree(what);
-        const std::uint32_t n = count(what, 8 * Dim);
+        const std::uint32_t n = count((std::string(what) + " point count").c_str(), 8 * Dim);
         const bool rational = c.u8(what) != 0;
         std::vector<double> U = doubles(std::size_t(n) + p + 1, what);
         std::vector<typename geom::NurbsCurve<Dim>::Point> P(n);
