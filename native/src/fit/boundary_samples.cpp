@@ -25,7 +25,12 @@ std::vector<BoundarySample> boundary_samples(const geom::Face& face, const std::
                 if (!(tangent.norm() > 0))
                     throw geom::NumericalFailure("boundary_samples: edge " + std::to_string(coedge.edge) +
                                                  " has a zero tangent at t = " + geom::format_value(t));
-                samples.push_back({d[0], tangent.normalized(), l, c});
+                samples.push_back({d[0], tangent.normalized(), l, c, Eigen::Vector3d::Zero()});
+                if (k == 0) {
+                    const auto e = curve.derivatives(coedge.edge_reversed ? a : b, 1);
+                    const Eigen::Vector3d end = coedge.edge_reversed ? Eigen::Vector3d(-e[1]) : Eigen::Vector3d(e[1]);
+                    if (end.norm() > 0) samples.back().end_tangent = end.normalized();
+                }
             }
         }
     return samples;

@@ -15,6 +15,7 @@ struct BoundarySample {
     Eigen::Vector3d x;
     Eigen::Vector3d tangent;  // unit, in traversal direction
     int loop = 0, coedge = 0;
+    Eigen::Vector3d end_tangent = Eigen::Vector3d::Zero();  // first sample of a coedge: the unit tangent at its end
 };
 
 // `per_coedge` samples per coedge at equal parameter steps, its end excluded (the

@@ -6,6 +6,7 @@
 
 #include "fit/boundary_curves.h"
 #include "fit/boundary_samples.h"
+#include "fit/corner_normals.h"
 #include "fit/fit_surface.h"
 #include "fit/loop_polygons.h"
 #include "fit/outside_samples.h"
@@ -31,8 +32,10 @@ std::vector<Eigen::Vector3d> sample_normals(const geom::Model& model, const Edge
                                             const FitRule& rule, const std::vector<BoundarySample>& samples,
                                             const LocalFrame& frame) {
     std::map<int, std::unique_ptr<geom::SurfaceProjector>> neighbours;
+    const std::vector<std::optional<Eigen::Vector3d>> from_corners = corner_normals(samples, frame.n);
     std::vector<Eigen::Vector3d> normals;
-    for (const BoundarySample& s : samples) {
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        const BoundarySample& s = samples[k];
         Eigen::Vector3d n;
         if (is_g1(rule, s)) {
             const int other = neighbour_face(model, uses, face, s.loop, s.coedge);
@@ -44,7 +47,9 @@ std::vector<Eigen::Vector3d> sample_normals(const geom::Model& model, const Edge
             const Eigen::Vector2d uv = projector->invert(s.x);
             n = model.faces[other].surface.normal(uv.x(), uv.y());
         } else {
-            n = frame.n - frame.n.dot(s.tangent) * s.tangent;  // the plane through t closest to the reference plane
+            // The corners' tangent plane (corner_normals), else the plane through t closest to the reference plane.
+            const Eigen::Vector3d guess = from_corners[k] ? *from_corners[k] : frame.n;
+            n = guess - guess.dot(s.tangent) * s.tangent;
             if (!(n.norm() > 1e-6)) n = s.tangent.unitOrthogonal();
         }
         n.normalize();

@@ -1,7 +1,8 @@
 // The surface of one face rebuilt from its boundary edges ([Muraki] Sec. 4, STEPs
 // 1-3): boundary samples on the edges, the local frame and reference planes
-// (Sec. 4.1), a tangent plane per sample (the G1 neighbour's, else the one through
-// the edge tangent closest to the reference plane), cross-boundary lines and their
+// (Sec. 4.1), a tangent plane per sample (the G1 neighbour's, else the one
+// interpolated from the loop's corners, corner_normals, else the one through the
+// edge tangent closest to the reference plane), cross-boundary lines and their
 // samples outside the region (Sec. 4.3), the four boundary curves (Sec. 4.1), and
 // the least-squares surface with G1 rows along the G1 coedges (Sec. 4.2, 4.3).
 // Departure (Sec. 4.2): the paper restrains the second control-point row of a
