@@ -6,6 +6,12 @@
 
 namespace trimkit::fit {
 
+Eigen::Vector3d coedge_point(const std::vector<geom::Edge>& edges, const geom::Coedge& coedge, double s) {
+    const geom::NurbsCurve3d& curve = *edges[coedge.edge].curve;
+    const auto [a, b] = curve.domain();
+    return curve.evaluate(coedge.edge_reversed ? b - s * (b - a) : a + s * (b - a));
+}
+
 std::vector<BoundarySample> boundary_samples(const geom::Face& face, const std::vector<geom::Edge>& edges,
                                              int per_coedge) {
     std::vector<BoundarySample> samples;

@@ -18,6 +18,10 @@ struct BoundarySample {
     Eigen::Vector3d end_tangent = Eigen::Vector3d::Zero();  // first sample of a coedge: the unit tangent at its end
 };
 
+// The point at fraction s in [0, 1] along a coedge's edge curve, in traversal
+// direction. Assumes the edge exists and has a curve.
+Eigen::Vector3d coedge_point(const std::vector<geom::Edge>& edges, const geom::Coedge& coedge, double s);
+
 // `per_coedge` samples per coedge at equal parameter steps, its end excluded (the
 // next coedge starts there). Throws geom::InvalidInput if a coedge has no edge
 // with a 3D curve (coedge_edges gives every coedge one) and NumericalFailure if a

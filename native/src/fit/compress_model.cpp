@@ -4,6 +4,7 @@
 #include <set>
 
 #include "fit/coedge_edges.h"
+#include "fit/coons_fill.h"
 #include "fit/edge_faces.h"
 #include "fit/judge_g1.h"
 #include "fit/refit_face.h"
@@ -93,11 +94,14 @@ std::string figure(double x) {
 bool try_rules(const geom::Model& m, int face, FaceCompression& out) {
     const EdgeFaces uses = edge_faces(m);
     double best = 1e300;
+    const bool coons = coons_applicable(m.faces[face], m.edges);
     for (const int count : kTriedCounts)
-        for (const bool curves : {true, false}) {
+        for (const int variant : {0, 1, 2}) {  // Coons (Sec. 3), then Sec. 4 with and without boundary curves
+            if (variant == 0 && !coons) continue;
             FitRule rule = out.rule;
             rule.count_u = rule.count_v = count;
-            rule.boundary_curves = curves;
+            rule.method = variant == 0 ? FitMethod::kCoons : FitMethod::kBoundaryG1;
+            rule.boundary_curves = variant == 1;
             try {
                 const RefitResult fit = refit_face(m, uses, face, rule);
                 const FitError error = evaluate_fit(m.faces[face], m.edges, fit.surface);

@@ -11,6 +11,7 @@ namespace trimkit::fit {
 
 enum class FitMethod : int {
     kBoundaryG1 = 1,  // [Muraki] Sec. 4: boundary curves, tangent-plane samples, G1 rows
+    kCoons = 2,       // [Muraki] Sec. 3's surface interpolation for four-sided faces (coons_fill)
 };
 
 struct FitRule {

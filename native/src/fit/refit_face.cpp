@@ -1,17 +1,16 @@
 #include "fit/refit_face.h"
 
-#include <map>
-#include <memory>
 #include <string>
 
 #include "fit/boundary_curves.h"
 #include "fit/boundary_samples.h"
+#include "fit/coons_fill.h"
 #include "fit/corner_normals.h"
 #include "fit/fit_surface.h"
 #include "fit/loop_polygons.h"
+#include "fit/neighbour_normals.h"
 #include "fit/outside_samples.h"
 #include "geom/error.h"
-#include "geom/surface_projector.h"
 
 namespace trimkit::fit {
 namespace {
@@ -31,21 +30,14 @@ bool is_g1(const FitRule& rule, const BoundarySample& s) {
 std::vector<Eigen::Vector3d> sample_normals(const geom::Model& model, const EdgeFaces& uses, int face,
                                             const FitRule& rule, const std::vector<BoundarySample>& samples,
                                             const LocalFrame& frame) {
-    std::map<int, std::unique_ptr<geom::SurfaceProjector>> neighbours;
+    NeighbourNormals neighbours(model, uses, face);
     const std::vector<std::optional<Eigen::Vector3d>> from_corners = corner_normals(samples, frame.n);
     std::vector<Eigen::Vector3d> normals;
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const BoundarySample& s = samples[k];
         Eigen::Vector3d n;
         if (is_g1(rule, s)) {
-            const int other = neighbour_face(model, uses, face, s.loop, s.coedge);
-            if (other < 0)
-                throw geom::InvalidInput("refit_face: face " + std::to_string(face) + " loop " + std::to_string(s.loop) +
-                                         " coedge " + std::to_string(s.coedge) + " is G1 but has no neighbour");
-            auto& projector = neighbours[other];
-            if (!projector) projector = std::make_unique<geom::SurfaceProjector>(model.faces[other].surface);
-            const Eigen::Vector2d uv = projector->invert(s.x);
-            n = model.faces[other].surface.normal(uv.x(), uv.y());
+            n = neighbours.at(s.loop, s.coedge, s.x);
         } else {
             // The corners' tangent plane (corner_normals), else the plane through t closest to the reference plane.
             const Eigen::Vector3d guess = from_corners[k] ? *from_corners[k] : frame.n;
@@ -70,6 +62,7 @@ LoopPolygons projected_loops(const std::vector<BoundarySample>& samples, const L
 }  // namespace
 
 RefitResult refit_face(const geom::Model& model, const EdgeFaces& uses, int face, const FitRule& rule) {
+    if (rule.method == FitMethod::kCoons) return {coons_fill(model, uses, face, rule), LocalFrame{}};
     const geom::Face& f = model.faces[face];
     const std::vector<BoundarySample> samples = boundary_samples(f, model.edges, kBoundarySamplesPerCoedge);
     const LocalFrame frame = local_frame(samples, outer_loop(f));

@@ -27,10 +27,11 @@ constexpr double kBoundaryWeight = 10.0;
 constexpr double kSurfaceSmoothing = 1e-6;
 
 struct RefitResult {
-    geom::NurbsSurface surface;  // on [0, 1]², (u, v) = frame.uv of its points, roughly
-    LocalFrame frame;
+    geom::NurbsSurface surface;  // on [0, 1]², (u, v) = frame.uv of its points, roughly (kBoundaryG1)
+    LocalFrame frame;            // kBoundaryG1 only
 };
 
+// rule.method kCoons: coons_fill instead (the four-sided interpolation of Sec. 3).
 // Uses model.edges for the face's boundary and model.faces[n].surface of every
 // neighbour n across a coedge that rule.g1 marks (never the face's own surface).
 // Throws geom::InvalidInput if a coedge has no 3D edge or a G1 coedge no

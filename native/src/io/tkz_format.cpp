@@ -156,7 +156,9 @@ struct Reader {
     fit::FitRule rule() {
         fit::FitRule r;
         const int method = c.u8("rule method");
-        if (method != static_cast<int>(fit::FitMethod::kBoundaryG1)) fail("rule method " + std::to_string(method) + " unknown; expected 1");
+        if (method != static_cast<int>(fit::FitMethod::kBoundaryG1) && method != static_cast<int>(fit::FitMethod::kCoons))
+            fail("rule method " + std::to_string(method) + " unknown; expected 1 or 2");
+        r.method = static_cast<fit::FitMethod>(method);
         r.degree_u = degree("rule degree u");
         r.degree_v = degree("rule degree v");
         r.count_u = c.u8("rule count u");
