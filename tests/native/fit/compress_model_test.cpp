@@ -108,3 +108,31 @@ TEST(CompressModel, AbsoluteToleranceBelowTheFitKeepsTheSurface) {
 
 }  // namespace
 }  // namespace trimkit::fit
+
+namespace trimkit::fit {
+namespace {
+
+// A half cylinder (radius 2, length 5) bounded by two semicircles and two lines:
+// its tangent planes turn by 180°, so no reference plane sees it as a graph
+// ([Muraki] Sec. 6), but the Coons patch of its four edges is the cylinder itself.
+TEST(CompressModel, HalfCylinderIsRebuiltByTheFourSidedInterpolation) {
+    geom::Face f;
+    f.surface = geom::cylinder_patch({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 2.0, 0, M_PI, 0, 5);
+    f.loops = {geom::natural_boundary_loop(f.surface)};
+    geom::Model m;
+    test::add_face(m, f);
+    std::vector<FaceCompression> report;
+    const CompressedModel c = compress_model(m, {}, &report);
+    ASSERT_TRUE(report[0].compressed) << report[0].reason;
+    EXPECT_EQ(report[0].rule.method, FitMethod::kCoons);
+    const FitError error = rebuilt_error(c.model, extend_model(c), 0);
+    // The cubic approximation of a half circle with 4 to 13 control points: well
+    // within 1 % of the face's box (diagonal sqrt(4² + 2² + 5²) = 6.7).
+    std::printf("half cylinder: %dx%d points, max %.3g (ratio %.4f%%)\n", report[0].rule.count_u,
+                report[0].rule.count_v, error.max(), 100 * error.ratio());
+    EXPECT_LE(error.max(), report[0].tolerance);
+    EXPECT_NEAR(error.box_diagonal, std::sqrt(4.0 * 4 + 2 * 2 + 5 * 5), 0.05);
+}
+
+}  // namespace
+}  // namespace trimkit::fit
