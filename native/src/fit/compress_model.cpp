@@ -6,6 +6,7 @@
 #include "fit/coedge_edges.h"
 #include "fit/coons_fill.h"
 #include "fit/edge_faces.h"
+#include "fit/g1_angle.h"
 #include "fit/judge_g1.h"
 #include "fit/refit_face.h"
 #include "geom/error.h"
@@ -94,6 +95,7 @@ std::string figure(double x) {
 bool try_rules(const geom::Model& m, int face, FaceCompression& out) {
     const EdgeFaces uses = edge_faces(m);
     double best = 1e300;
+    bool best_angle_failed = false;  // a fit was within the tolerance but not G1 enough
     const bool coons = coons_applicable(m.faces[face], m.edges);
     for (const int count : kTriedCounts)
         for (const int variant : {0, 1, 2}) {  // Coons (Sec. 3), then Sec. 4 with and without boundary curves
@@ -106,7 +108,14 @@ bool try_rules(const geom::Model& m, int face, FaceCompression& out) {
                 const RefitResult fit = refit_face(m, uses, face, rule);
                 const FitError error = evaluate_fit(m.faces[face], m.edges, fit.surface);
                 if (error.max() < best) best = error.max(), out.error = error;
+                const double angle = g1_angle(m, uses, face, rule, fit.surface);
+                if (error.max() <= out.tolerance && angle > kMaxG1Angle) {
+                    out.reason = "G1 angle " + figure(angle) + " deg > " + figure(kMaxG1Angle);
+                    best_angle_failed = true;
+                    continue;
+                }
                 if (error.max() <= out.tolerance) {
+                    out.g1_angle = angle;
                     rule.reversed = fitted_reversed(m.faces[face], fit.surface);
                     out.rule = rule;
                     out.error = error;
@@ -116,7 +125,8 @@ bool try_rules(const geom::Model& m, int face, FaceCompression& out) {
                 out.reason = std::string("fit failed: ") + e.what();
             }
         }
-    if (best < 1e300) out.reason = "max error " + figure(best) + " > tolerance " + figure(out.tolerance);
+    if (best < 1e300 && !best_angle_failed)
+        out.reason = "max error " + figure(best) + " > tolerance " + figure(out.tolerance);
     return false;
 }
 

@@ -5,6 +5,7 @@
 #include "fit/boundary_samples.h"
 #include "fit/fit_surface.h"
 #include "fit/neighbour_normals.h"
+#include "fit/refit_face.h"
 #include "geom/error.h"
 
 namespace trimkit::fit {
@@ -29,6 +30,7 @@ geom::NurbsSurface coons_fill(const geom::Model& model, const EdgeFaces& uses, i
     problem.degree_u = rule.degree_u, problem.degree_v = rule.degree_v;
     problem.count_u = rule.count_u, problem.count_v = rule.count_v;
     problem.smoothing = 1e-9;  // the grid determines every point; the energy only breaks ties
+    problem.tangent_weight = kG1Weight;
     NeighbourNormals neighbours(model, uses, face);
     const auto g1 = [&](int k) { return !rule.g1.empty() && rule.g1[0].size() == 4 && rule.g1[0][k]; };
     for (int i = 0; i <= kCoonsGrid; ++i)

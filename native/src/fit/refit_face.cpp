@@ -73,6 +73,7 @@ RefitResult refit_face(const geom::Model& model, const EdgeFaces& uses, int face
     problem.degree_u = rule.degree_u, problem.degree_v = rule.degree_v;
     problem.count_u = rule.count_u, problem.count_v = rule.count_v;
     problem.smoothing = kSurfaceSmoothing;
+    problem.tangent_weight = kG1Weight;
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const Eigen::Vector2d uv = frame.uv(samples[k].x).cwiseMax(0.0).cwiseMin(1.0);
         problem.points.push_back({uv, samples[k].x, kBoundaryWeight});

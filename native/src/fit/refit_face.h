@@ -23,6 +23,9 @@ constexpr int kBoundarySamplesPerCoedge = 24;
 // Weight of a boundary sample against one outside sample: the surface must pass
 // through the edges (Sec. 4.4 checks them), the outside samples only guide it.
 constexpr double kBoundaryWeight = 10.0;
+// Weight of the G1 rows against the points (fit_surface's tangent_weight): high
+// enough that the normals along a G1 edge agree to well under 0.5°.
+constexpr double kG1Weight = 100.0;
 // Smoothing of the surface fit (thin-plate energy against the mean squared error).
 constexpr double kSurfaceSmoothing = 1e-6;
 
