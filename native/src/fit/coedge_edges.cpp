@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "fit/fit_curve.h"
@@ -9,7 +10,8 @@
 namespace trimkit::fit {
 namespace {
 
-constexpr int kCurveCounts[] = {4, 8, 16, 32, kMaxFitControlPoints};
+// (degree, control points) tried in order: a straight line first, then cubics.
+constexpr std::pair<int, int> kCurveShapes[] = {{1, 2}, {3, 4}, {3, 8}, {3, 16}, {3, 32}, {3, kMaxFitControlPoints}};
 // Samples per control point: enough that the fit is judged between its knots.
 constexpr int kSamplesPerPoint = 6;
 
@@ -19,11 +21,12 @@ std::optional<geom::NurbsCurve3d> edge_curve(const geom::NurbsSurface& S, const 
         const Eigen::Vector2d uv = c.evaluate(a + (b - a) * s);
         return S.evaluate(uv.x(), uv.y());
     };
-    for (const int count : kCurveCounts) {
+    for (const auto& [degree, count] : kCurveShapes) {
         CurveFitProblem problem;
+        problem.degree = degree;
         problem.count = count;
         problem.smoothing = 0;  // samples are plenty (kSamplesPerPoint per control point); the energy would bias them
-        const int m = kSamplesPerPoint * count;
+        const int m = kSamplesPerPoint * std::max(count, 4);
         // Chord-length parameters: rational arcs are only C1 in their own parameter
         // at their knots, which a uniform-knot cubic follows slowly; in arc length
         // the image is as smooth as its geometry.
@@ -64,9 +67,7 @@ bool add_coedge_edges(geom::Model& model, int face, double tolerance) {
             if (shared) {
                 edges[coedge.edge].curve = coedge.edge_reversed ? curve->reversed() : *curve;
             } else {
-                geom::Edge e;
-                e.start = curve->points().front();
-                e.end = curve->points().back();
+                geom::Edge e;  // no start/end vertices: the curve's ends are the vertices
                 e.curve = std::move(*curve);
                 coedge.edge = static_cast<int>(edges.size());
                 coedge.edge_reversed = false;

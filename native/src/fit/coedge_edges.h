@@ -1,9 +1,9 @@
 // 3D edge curves for the coedges of a face that have none: a face rebuilt from
 // its boundary ([Muraki] Sec. 2) needs every boundary edge in model space, but
 // files without B-rep topology (IGES 144 without 3D curves, free faces) give only
-// parameter curves. The image S(c(t)) of the coedge's curve is fitted by a cubic
-// (fit_curve through its exact end points) with as few control points as keep it
-// within the tolerance.
+// parameter curves. The image S(c(t)) of the coedge's curve is fitted (fit_curve
+// through its exact end points, chord-length parameters) by a line when it is one
+// within the tolerance, else by a cubic with as few control points as keep it so.
 #pragma once
 
 #include "geom/model.h"
