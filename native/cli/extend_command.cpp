@@ -6,6 +6,7 @@
 #include "arguments.h"
 #include "commands.h"
 #include "fit/extend_model.h"
+#include "geom/flatten_instances.h"
 #include "io/tkz_format.h"
 #include "io/write_iges.h"
 
@@ -22,7 +23,8 @@ int run_extend(const std::vector<std::string>& argv) {
     const fit::CompressedModel compressed = io::read_tkz(args.positionals()[0]);
     int rebuilt = 0;
     for (const auto& rule : compressed.rules) rebuilt += rule.has_value();
-    const geom::Model model = fit::extend_model(compressed);
+    // IGES gets every placed face (subfigures and assemblies flattened), as `mesh` sees them.
+    const geom::Model model = geom::flatten_instances(fit::extend_model(compressed));
     io::write_iges(model, out);
     std::printf("faces: %zu, %d rebuilt from their edges; wrote %s\n", model.faces.size(), rebuilt, out.c_str());
     return 0;
