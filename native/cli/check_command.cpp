@@ -110,7 +110,9 @@ bool is_model_path(const std::string& path) {
 
 // trimkit check A B with two models: the two-sided surface deviation per face.
 int check_models(const std::string& a_path, const std::string& b_path) {
-    const geom::Model a = read_model_or_tkz(a_path), b = read_model_or_tkz(b_path);
+    // Every placed face on both sides (extend writes IGES with instances flattened).
+    const geom::Model a = geom::flatten_instances(read_model_or_tkz(a_path));
+    const geom::Model b = geom::flatten_instances(read_model_or_tkz(b_path));
     const std::vector<fit::FaceDeviation> d = fit::model_deviation(a, b);
     double worst = 0;
     int worst_face = -1;

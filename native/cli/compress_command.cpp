@@ -22,10 +22,11 @@ std::string face_line(int f, const fit::FaceCompression& c) {
     if (c.compressed)
         std::snprintf(buf, sizeof buf,
                       "face %d: compressed (%s, degree %dx%d, %dx%d points, %d G1 edges, G1 max %.3g deg) avg %.3g "
-                      "max %.3g ratio %.4f%% edges max %.3g, tolerance %.3g\n",
+                      "max %.3g ratio %.4f%% edges max %.3g, back %.3g, tolerance %.3g\n",
                       f, c.rule.method == fit::FitMethod::kCoons ? "coons" : "boundary fit", c.rule.degree_u,
                       c.rule.degree_v, c.rule.count_u, c.rule.count_v, c.g1_edges, c.g1_angle,
-                      c.error.surface_avg, c.error.max(), 100 * c.error.ratio(), c.error.edge_max, c.tolerance);
+                      c.error.surface_avg, c.error.max(), 100 * c.error.ratio(), c.error.edge_max, c.reverse_max,
+                      c.tolerance);
     else
         std::snprintf(buf, sizeof buf, "face %d: kept (%s)\n", f, c.reason.c_str());
     return buf;

@@ -6,6 +6,8 @@
 #include "fit/coedge_edges.h"
 #include "fit/coons_fill.h"
 #include "fit/edge_faces.h"
+#include "fit/extend_model.h"
+#include "fit/surface_deviation.h"
 #include "fit/g1_angle.h"
 #include "fit/judge_g1.h"
 #include "fit/refit_face.h"
@@ -95,7 +97,7 @@ std::string figure(double x) {
 bool try_rules(const geom::Model& m, int face, FaceCompression& out) {
     const EdgeFaces uses = edge_faces(m);
     double best = 1e300;
-    bool best_angle_failed = false;  // a fit was within the tolerance but not G1 enough
+    bool best_angle_failed = false;  // a fit was within the tolerance but failed G1 or the other direction
     const bool coons = coons_applicable(m.faces[face], m.edges);
     for (const int count : kTriedCounts)
         for (const int variant : {0, 1, 2}) {  // Coons (Sec. 3), then Sec. 4 with and without boundary curves
@@ -115,6 +117,16 @@ bool try_rules(const geom::Model& m, int face, FaceCompression& out) {
                     continue;
                 }
                 if (error.max() <= out.tolerance) {
+                    // The other direction (what `trimkit check A B` measures too): the
+                    // rebuilt face's grid onto the source surface.
+                    rule.reversed = fitted_reversed(m.faces[face], fit.surface);
+                    const SurfaceDeviation back = surface_deviation(extend_face(m, face, rule), m.faces[face].surface);
+                    out.reverse_max = back.max;
+                    if (!(back.max <= out.tolerance)) {
+                        out.reason = "rebuilt face -> source " + figure(back.max) + " > tolerance " + figure(out.tolerance);
+                        best_angle_failed = true;
+                        continue;
+                    }
                     out.g1_angle = angle;
                     rule.reversed = fitted_reversed(m.faces[face], fit.surface);
                     out.rule = rule;

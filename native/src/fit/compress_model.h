@@ -2,7 +2,8 @@
 // is refitted from its boundary edges (refit_face) and the fit judged as in
 // Sec. 4.4 (evaluate_fit); a face whose maximum error is within the tolerance
 // keeps only its FitRule, the others keep their surface; a fit along G1 edges must
-// also keep the normals within kMaxG1Angle there (g1_angle). Faces are taken in
+// also keep the normals within kMaxG1Angle there (g1_angle), and the rebuilt face
+// (extend_face) must lie within the tolerance of the source surface too. Faces are taken in
 // order; a face is compressed only if every G1 neighbour still has its surface
 // (extension rebuilds from neighbours' surfaces), and once it is, its G1
 // neighbours keep theirs. Periodic faces (a seam edge used twice, or a closed
@@ -34,6 +35,7 @@ struct FaceCompression {
     FitRule rule;         // the rule used (or the last tried)
     int g1_edges = 0;     // coedges judged G1
     double g1_angle = 0;  // degrees, the accepted fit's g1_angle (<= kMaxG1Angle)
+    double reverse_max = 0;  // rebuilt face's grid -> source surface (surface_deviation), <= tolerance
 };
 
 // The model with every compressed face's coedges on 3D edges (new edges fitted

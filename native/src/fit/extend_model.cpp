@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "fit/compress_model.h"
 #include "fit/edge_faces.h"
 #include "fit/refit_face.h"
 #include "geom/error.h"

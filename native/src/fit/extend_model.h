@@ -5,7 +5,7 @@
 // their surface are returned unchanged.
 #pragma once
 
-#include "fit/compress_model.h"
+#include "fit/fit_rule.h"
 #include "geom/model.h"
 
 namespace trimkit::fit {
@@ -15,6 +15,7 @@ constexpr double kParameterCurveTolerance = 0.05;
 
 // Throws geom::InvalidInput if a rule's G1 neighbour is itself compressed or a
 // coedge has no 3D edge; geom::NumericalFailure if a fit is degenerate.
+struct CompressedModel;
 geom::Model extend_model(const CompressedModel& compressed);
 
 // One face: its rebuilt surface, loops with projected parameter curves and orientation.
