@@ -110,5 +110,33 @@ TEST(Tkz, HostileInputGivesAClearError) {
     expect_read_error(good + "x", "after the end");
 }
 
+TEST(Tkz, EveryByteFlippedIsReadOrRefusedNeverACrash) {
+    // Every 3rd byte of a small file set to 0x00 and 0xff in turn: the reader returns a
+    // model or throws ReadError; one in 40 models that read is also extended (a fit is
+    // ~50 ms), which ends or throws a geom error (a degenerate fit), nothing else.
+    std::vector<fit::FaceCompression> report;
+    const std::string good = tkz_bytes(fit::compress_model(fit::test::concave_face(), {}, &report));
+    ASSERT_TRUE(report[0].compressed);
+    int read = 0, refused = 0;
+    for (std::size_t i = 0; i < good.size(); i += 3)
+        for (const unsigned char value : {0x00, 0xff}) {
+            std::string bad = good;
+            bad[i] = static_cast<char>(value);
+            try {
+                const fit::CompressedModel m = read_tkz_bytes(bad, "bad.tkz");
+                if (++read % 40 != 0) continue;
+                try {
+                    fit::extend_model(m);
+                } catch (const geom::InvalidInput&) {
+                } catch (const geom::NumericalFailure&) {
+                }
+            } catch (const geom::ReadError&) {
+                ++refused;
+            }
+        }
+    std::printf("%zu bytes: %d variants read, %d refused\n", good.size(), read, refused);
+    EXPECT_GT(refused, 0);
+}
+
 }  // namespace
 }  // namespace trimkit::io
