@@ -42,8 +42,12 @@ SurfaceDeviation surface_deviation(const geom::Face& source, const geom::NurbsSu
                 uv_box.min() + (uv_box.max() - uv_box.min()).cwiseProduct(Eigen::Vector2d(i, j) / kErrorGridSections);
             if (!region.contains(uv)) continue;
             const Eigen::Vector3d x = source.surface.evaluate(uv.x(), uv.y());
-            const Eigen::Vector2d st = projector.invert(x);
-            const double e = (target.evaluate(st.x(), st.y()) - x).norm();
+            // Two Newton starts, the grid's and the source (u, v) (the right one when both
+            // faces share a surface, where the grid start can stall on a closed surface);
+            // either result is a point of the target, so the nearer is the better bound.
+            const Eigen::Vector2d st = projector.invert(x), near = projector.invert(x, &uv);
+            const double e = std::min((target.evaluate(st.x(), st.y()) - x).norm(),
+                                      (target.evaluate(near.x(), near.y()) - x).norm());
             d.box.extend(x);
             sum += e;
             d.max = std::max(d.max, e);
