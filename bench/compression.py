@@ -30,6 +30,7 @@ def row(trimkit, path, tolerance, tmp):
     compressed = [int(m.group(1)) for m in re.finditer(r"^face (\d+): compressed", out, re.M)]
     faces = len(re.findall(r"^face \d+:", out, re.M))
     errors = [float(x) for x in re.findall(r"^face \d+: compressed .* max (\S+) ratio", out, re.M)]
+    tolerance = {int(f): float(t) for f, t in re.findall(r"^face (\d+): compressed .* tolerance (\S+)$", out, re.M)}
     sizes = re.search(r"bytes: source (\d+), tkz with every surface kept (\d+), tkz (\d+)", out)
     source, kept, packed = (int(x) for x in sizes.groups())
     kept_tkz = tmp / (path.stem + "_kept.tkz")
@@ -37,13 +38,15 @@ def row(trimkit, path, tolerance, tmp):
     gz = lambda p: len(gzip.compress(pathlib.Path(p).read_bytes(), 9))
     run([trimkit, "extend", str(tkz), "-o", str(igs)])
     check = run([trimkit, "check", str(path), str(igs)])
-    deviation = 0.0
+    deviation, share = 0.0, 0.0  # largest two-sided deviation, and its largest share of the face's tolerance
     for m in re.finditer(r"^face (\d+): A->B avg \S+ max (\S+), B->A avg \S+ max (\S+)", check, re.M):
-        if int(m.group(1)) in compressed:
-            deviation = max(deviation, float(m.group(2)), float(m.group(3)))
+        f = int(m.group(1))
+        if f in compressed:
+            d = max(float(m.group(2)), float(m.group(3)))
+            deviation, share = max(deviation, d), max(share, d / tolerance[f])
     return (f"| {path.name} | {faces} | {len(compressed)} ({100 * len(compressed) / max(faces, 1):.0f} %) | {source} | "
             f"{kept} | {packed} ({100 * (1 - packed / source):.1f} % / {100 * (1 - packed / kept):.1f} %) | "
-            f"{gz(path)} | {gz(kept_tkz)} | {gz(tkz)} | {max(errors, default=0):.3g} | {deviation:.3g} |")
+            f"{gz(path)} | {gz(kept_tkz)} | {gz(tkz)} | {max(errors, default=0):.3g} | {deviation:.3g} ({share:.2f}) |")
 
 
 def main():
@@ -53,7 +56,7 @@ def main():
     parser.add_argument("files", nargs="+")
     args = parser.parse_args()
     print("| file | faces | compressed | source B | tkz kept B | tkz B (smaller than source / kept) | "
-          "gzip source | gzip kept | gzip tkz | max fit error | max round-trip deviation |")
+          "gzip source | gzip kept | gzip tkz | max fit error | max round-trip deviation (/ tolerance) |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     with tempfile.TemporaryDirectory() as tmp:
         for f in args.files:
