@@ -1,0 +1,42 @@
+"""_trimkit.compress_model / extend_model / tkz bytes ([Muraki], issue 11)."""
+import pytest
+
+import _trimkit
+
+from conftest import CAD
+
+
+def test_bracket_round_trip_through_tkz_bytes(bracket):
+    model = _trimkit.read_model(bracket)
+    compressed, report = _trimkit.compress_model(model)
+    assert len(report) == 2
+    # The plate's hole would need a 64-point cubic edge: larger than its surface, kept.
+    assert all(not r.compressed for r in report) or compressed.compressed_faces
+    data = _trimkit.tkz_bytes(compressed)
+    assert data[:4] == b"TKZ1"
+    back = _trimkit.read_tkz_bytes(data, "bracket.tkz")
+    assert _trimkit.tkz_bytes(back) == data
+    extended = _trimkit.extend_model(back)
+    assert len(extended.faces) == 2
+    assert max(d.max for d in _trimkit.model_deviation(model, extended)) <= max(r.tolerance for r in report)
+
+
+def test_hammer_compresses_most_faces_within_their_tolerance():
+    path = CAD / "iges" / "hammer.iges"
+    if not path.exists():
+        pytest.skip(f"{path} not found (../shared/data/cad)")
+    model = _trimkit.read_model(str(path))
+    options = _trimkit.CompressOptions()
+    compressed, report = _trimkit.compress_model(model, options)
+    done = [f for f, r in enumerate(report) if r.compressed]
+    assert done == compressed.compressed_faces
+    assert len(done) >= 30
+    extended = _trimkit.extend_model(compressed)
+    deviation = _trimkit.model_deviation(model, extended)
+    for f in done:
+        assert deviation[f].max <= report[f].tolerance, f
+
+
+def test_bad_tkz_bytes_raise_read_error():
+    with pytest.raises(RuntimeError, match="bad.tkz: not a .tkz file"):
+        _trimkit.read_tkz_bytes(b"IGES1234", "bad.tkz")
