@@ -125,7 +125,8 @@ std::string IgesBuilder::text(const geom::Model& m, const std::string& name) con
     const std::vector<std::string> global = {
         "1H,", "1H;", hollerith("trimkit"), hollerith(name), hollerith("trimkit"), hollerith("trimkit 0.1"), "32", "38",
         "6", "308", "15", hollerith("trimkit"), "1.", std::to_string(flag), hollerith(unit), "1", "0.01",
-        hollerith("20260101.000000"), "1E-09", "0.", hollerith(""), hollerith(""), "11", "0"};
+        hollerith("20260101.000000"), "1E-09", "0.", hollerith("trimkit"), hollerith("trimkit"), "11", "0",
+        hollerith("20260101.000000")};  // [IGES] Table 3: 25 fields, the last change date last
     std::string gtext;
     for (std::size_t k = 0; k < global.size(); ++k) gtext += global[k] + (k + 1 < global.size() ? "," : ";");
     int g = 0;
