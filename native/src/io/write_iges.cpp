@@ -157,37 +157,102 @@ std::string IgesBuilder::text(const geom::Model& m, const std::string& name) con
     return out + record(t, 'T', 1);
 }
 
+// A free face: 144 on its 128, one 142 per loop (parameter and model curves as 102s).
+void trimmed_face(IgesBuilder& b, const geom::Model& m, const geom::Face& face) {
+    const int surface = b.surface(face.surface);
+    std::vector<int> boundaries;
+    int outer = -1;
+    for (const geom::Loop& loop : face.loops) {
+        std::vector<int> params, models;
+        bool all_models = true;
+        for (const geom::Coedge& c : loop.coedges) {
+            params.push_back(b.curve(c.curve));
+            const bool has = c.edge >= 0 && c.edge < static_cast<int>(m.edges.size()) && m.edges[c.edge].curve;
+            if (!has) { all_models = false; continue; }
+            const geom::NurbsCurve3d& e = *m.edges[c.edge].curve;
+            models.push_back(b.curve(c.edge_reversed ? e.reversed() : e));
+        }
+        const int pc = b.composite(params);
+        const int mc = all_models ? b.composite(models) : 0;
+        const int de = b.add({142, 0, true, {"142", "0", std::to_string(surface), std::to_string(pc), std::to_string(mc), "1"}});
+        if (loop.outer && outer < 0) outer = de;
+        else boundaries.push_back(de);
+    }
+    if (outer < 0 && !boundaries.empty()) outer = boundaries.front(), boundaries.erase(boundaries.begin());
+    Entity trimmed{144, 0, false, {"144", std::to_string(surface), "1", std::to_string(boundaries.size()), std::to_string(outer)}};
+    for (int d : boundaries) trimmed.params.push_back(std::to_string(d));
+    b.add(trimmed);
+}
+
+// Every coedge of the body's faces on an edge with a 3D curve: it can be a B-rep.
+bool has_topology(const geom::Model& m, const geom::Body& body) {
+    for (int f : body.faces)
+        for (const geom::Loop& loop : m.faces[f].loops)
+            for (const geom::Coedge& c : loop.coedges)
+                if (c.edge < 0 || c.edge >= static_cast<int>(m.edges.size()) || !m.edges[c.edge].curve) return false;
+    return !body.faces.empty();
+}
+
+// One body as [IGES] 4.140-4.150: a 502 vertex list (two per edge: its curve's ends),
+// a 504 edge list of the body's edges, per face a 510 of 508 loops
+// (each edge with its parameter curve), a 514 shell, and a 186 solid when closed.
+// has_topology(m, body) must hold.
+void brep_body(IgesBuilder& b, const geom::Model& m, const geom::Body& body) {
+    std::vector<int> edges(m.edges.size(), 0);  // model edge -> 1-based index in the 504, 0: not in the body
+    for (int f : body.faces)
+        for (const geom::Loop& loop : m.faces[f].loops)
+            for (const geom::Coedge& c : loop.coedges) edges[c.edge] = -1;
+    std::vector<int> curves;
+    Entity vertices{502, 1, true, {"502", "0"}};
+    int count = 0;
+    for (std::size_t e = 0; e < m.edges.size(); ++e) {
+        if (edges[e] == 0) continue;
+        edges[e] = ++count;
+        curves.push_back(b.curve(*m.edges[e].curve));
+        for (const Eigen::Vector3d& p : {m.edges[e].curve->points().front(), m.edges[e].curve->points().back()})
+            for (int k = 0; k < 3; ++k) vertices.params.push_back(real(p[k]));
+    }
+    vertices.params[1] = std::to_string(2 * count);
+    const int vl = b.add(vertices);
+    Entity list{504, 1, true, {"504", std::to_string(count)}};
+    for (int k = 0; k < count; ++k)
+        for (const int x : {curves[k], vl, 2 * k + 1, vl, 2 * k + 2}) list.params.push_back(std::to_string(x));
+    const int el = b.add(list);
+    Entity shell{514, body.closed ? 1 : 2, body.closed, {"514", std::to_string(body.faces.size())}};
+    for (int f : body.faces) {
+        const geom::Face& face = m.faces[f];
+        const int surface = b.surface(face.surface);
+        std::vector<const geom::Loop*> loops;  // the outer loop first (510's outer flag 1)
+        for (const geom::Loop& loop : face.loops) if (loop.outer) loops.insert(loops.begin(), &loop); else loops.push_back(&loop);
+        Entity f510{510, 1, true, {"510", std::to_string(surface), std::to_string(loops.size()), "1"}};
+        for (const geom::Loop* loop : loops) {
+            Entity l508{508, 1, true, {"508", std::to_string(loop->coedges.size())}};
+            for (const geom::Coedge& c : loop->coedges)
+                for (const std::string& x : {std::string("0"), std::to_string(el), std::to_string(edges[c.edge]),
+                                             std::string(c.edge_reversed ? "0" : "1"), std::string("1"), std::string("0"),
+                                             std::to_string(b.curve(c.curve))})
+                    l508.params.push_back(x);
+            f510.params.push_back(std::to_string(b.add(l508)));
+        }
+        shell.params.push_back(std::to_string(b.add(f510)));
+        shell.params.push_back(face.reversed ? "0" : "1");
+    }
+    const int s514 = b.add(shell);
+    if (body.closed) b.add({186, 0, false, {"186", std::to_string(s514), "1", "0"}});
+}
+
 }  // namespace
 
 std::string iges_text(const geom::Model& m, const std::string& file_name) {
     IgesBuilder b;
-    for (std::size_t f = 0; f < m.faces.size(); ++f) {
-        const geom::Face& face = m.faces[f];
-        const int surface = b.surface(face.surface);
-        std::vector<int> boundaries;
-        int outer = -1;
-        for (std::size_t l = 0; l < face.loops.size(); ++l) {
-            std::vector<int> params, models;
-            bool all_models = true;
-            for (const geom::Coedge& c : face.loops[l].coedges) {
-                params.push_back(b.curve(c.curve));
-                const bool has = c.edge >= 0 && c.edge < static_cast<int>(m.edges.size()) && m.edges[c.edge].curve;
-                if (!has) { all_models = false; continue; }
-                const geom::NurbsCurve3d& e = *m.edges[c.edge].curve;
-                models.push_back(b.curve(c.edge_reversed ? e.reversed() : e));
-            }
-            const int pc = b.composite(params);
-            const int mc = all_models ? b.composite(models) : 0;
-            Entity cos{142, 0, true, {"142", "0", std::to_string(surface), std::to_string(pc), std::to_string(mc), "1"}};
-            const int de = b.add(cos);
-            if (face.loops[l].outer && outer < 0) outer = de;
-            else boundaries.push_back(de);
-        }
-        if (outer < 0 && !boundaries.empty()) outer = boundaries.front(), boundaries.erase(boundaries.begin());
-        Entity trimmed{144, 0, false, {"144", std::to_string(surface), "1", std::to_string(boundaries.size()), std::to_string(outer)}};
-        for (int d : boundaries) trimmed.params.push_back(std::to_string(d));
-        b.add(trimmed);
+    std::vector<bool> written(m.faces.size(), false);
+    for (const geom::Body& body : m.bodies) {
+        if (!has_topology(m, body)) continue;
+        brep_body(b, m, body);
+        for (int f : body.faces) written[f] = true;
     }
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+        if (!written[f]) trimmed_face(b, m, m.faces[f]);
     return b.text(m, file_name);
 }
 
