@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "fit/fit_curve.h"
 #include "fit/least_squares_system.h"
@@ -57,15 +59,8 @@ Basis basis(const std::vector<double>& U, int p, double t) {
 
 double total_weight(double sum) { return sum > 0 ? sum : 1.0; }
 
-}  // namespace
-
-geom::NurbsSurface fit_surface(const SurfaceFitProblem& f) {
-    validate_counts(f);
-    const int pu = f.degree_u, pv = f.degree_v, nu = f.count_u, nv = f.count_v;
-    const std::vector<double> U = geom::uniform_clamped_knots(nu, pu), V = geom::uniform_clamped_knots(nv, pv);
-    const auto index = [nv](int i, int j, int c) { return 3 * (i * nv + j) + c; };
-    LeastSquaresSystem system(3 * nu * nv);
-
+// Validates the samples; returns their total weights (points, tangent planes).
+std::pair<double, double> validate_samples(const SurfaceFitProblem& f) {
     double point_sum = 0, tangent_sum = 0;
     for (std::size_t k = 0; k < f.points.size(); ++k) {
         validate_uv(f.points[k].uv, f.points[k].weight, k, "point");
@@ -78,42 +73,69 @@ geom::NurbsSurface fit_surface(const SurfaceFitProblem& f) {
             throw geom::InvalidInput("fit_surface: tangent plane " + std::to_string(k) + " normal is not finite");
         tangent_sum += f.tangent_planes[k].weight;
     }
-    for (const SurfaceSample& s : f.points) {
-        const Basis bu = basis(U, pu, s.uv.x()), bv = basis(V, pv, s.uv.y());
-        const double w = std::sqrt(s.weight / total_weight(point_sum));
+    return {total_weight(point_sum), total_weight(tangent_sum)};
+}
+
+struct Net {
+    int pu, pv, nu, nv;
+    std::vector<double> U, V;
+    int index(int i, int j, int c) const { return 3 * (i * nv + j) + c; }
+};
+
+// Point rows: S(u_k, v_k) = x_k, one row per coordinate.
+void add_point_rows(LeastSquaresSystem& system, const Net& net, const std::vector<SurfaceSample>& points, double total) {
+    for (const SurfaceSample& s : points) {
+        const Basis bu = basis(net.U, net.pu, s.uv.x()), bv = basis(net.V, net.pv, s.uv.y());
+        const double w = std::sqrt(s.weight / total);
         for (int c = 0; c < 3; ++c) {
             std::vector<std::pair<int, double>> row;
-            for (int a = 0; a <= pu; ++a)
-                for (int b = 0; b <= pv; ++b)
-                    row.emplace_back(index(bu.span - pu + a, bv.span - pv + b, c), bu.value[a] * bv.value[b]);
+            for (int a = 0; a <= net.pu; ++a)
+                for (int b = 0; b <= net.pv; ++b)
+                    row.emplace_back(net.index(bu.span - net.pu + a, bv.span - net.pv + b, c), bu.value[a] * bv.value[b]);
             system.add_row(row, s.x[c], w);
         }
     }
-    // G1 rows: n·S_u = Σ N'_a(u) N_b(v) n·P_ab = 0 and the same with S_v.
-    for (const TangentPlaneSample& t : f.tangent_planes) {
-        const Basis bu = basis(U, pu, t.uv.x()), bv = basis(V, pv, t.uv.y());
-        const double w = std::sqrt(f.tangent_weight * t.weight / total_weight(tangent_sum));
+}
+
+// G1 rows: n·S_u = Σ N'_a(u) N_b(v) n·P_ab = 0 and the same with S_v.
+void add_tangent_rows(LeastSquaresSystem& system, const Net& net, const std::vector<TangentPlaneSample>& planes,
+                      double weight, double total) {
+    for (const TangentPlaneSample& t : planes) {
+        const Basis bu = basis(net.U, net.pu, t.uv.x()), bv = basis(net.V, net.pv, t.uv.y());
+        const double w = std::sqrt(weight * t.weight / total);
         for (int direction = 0; direction < 2; ++direction) {
             std::vector<std::pair<int, double>> row;
-            for (int a = 0; a <= pu; ++a)
-                for (int b = 0; b <= pv; ++b) {
+            for (int a = 0; a <= net.pu; ++a)
+                for (int b = 0; b <= net.pv; ++b) {
                     const double N = direction == 0 ? bu.derivative[a] * bv.value[b] : bu.value[a] * bv.derivative[b];
                     for (int c = 0; c < 3; ++c)
-                        row.emplace_back(index(bu.span - pu + a, bv.span - pv + b, c), N * t.normal[c]);
+                        row.emplace_back(net.index(bu.span - net.pu + a, bv.span - net.pv + b, c), N * t.normal[c]);
                 }
             system.add_row(row, 0.0, w);
         }
     }
-    add_smoothing_rows(system, nu, nv, std::sqrt(f.smoothing));
+}
+
+}  // namespace
+
+geom::NurbsSurface fit_surface(const SurfaceFitProblem& f) {
+    validate_counts(f);
+    const auto [point_total, tangent_total] = validate_samples(f);
+    const Net net{f.degree_u, f.degree_v, f.count_u, f.count_v, geom::uniform_clamped_knots(f.count_u, f.degree_u),
+                  geom::uniform_clamped_knots(f.count_v, f.degree_v)};
+    LeastSquaresSystem system(3 * net.nu * net.nv);
+    add_point_rows(system, net, f.points, point_total);
+    add_tangent_rows(system, net, f.tangent_planes, f.tangent_weight, tangent_total);
+    add_smoothing_rows(system, net.nu, net.nv, std::sqrt(f.smoothing));
     for (std::size_t k = 0; k < f.fixed.size(); ++k)
         if (f.fixed[k]) {
             if (!f.fixed[k]->allFinite()) throw geom::InvalidInput("fit_surface: fixed point " + std::to_string(k) + " is not finite");
             for (int c = 0; c < 3; ++c) system.fix(3 * static_cast<int>(k) + c, (*f.fixed[k])[c]);
         }
     const Eigen::VectorXd x = system.solve("fit_surface");
-    std::vector<Eigen::Vector3d> P(nu * nv);
-    for (int k = 0; k < nu * nv; ++k) P[k] = x.segment<3>(3 * k);
-    return geom::NurbsSurface(pu, pv, U, V, nu, nv, std::move(P));
+    std::vector<Eigen::Vector3d> P(net.nu * net.nv);
+    for (int k = 0; k < net.nu * net.nv; ++k) P[k] = x.segment<3>(3 * k);
+    return geom::NurbsSurface(net.pu, net.pv, net.U, net.V, net.nu, net.nv, std::move(P));
 }
 
 }  // namespace trimkit::fit

@@ -273,6 +273,50 @@ void write_tkz(const fit::CompressedModel& model, const std::string& path) {
     out.commit();
 }
 
+void read_edges(Reader& r, geom::Model& m) {
+    const std::uint32_t edges = r.count("edge count", 1);
+    for (std::uint32_t k = 0; k < edges; ++k) {
+        geom::Edge e;
+        const int flags = r.c.u8("edge flags");
+        if (flags & 1) e.curve = r.curve<3>("edge curve");
+        if (flags & 2) e.start = r.point("edge start");
+        if (flags & 4) e.end = r.point("edge end");
+        m.edges.push_back(std::move(e));
+    }
+}
+
+// Bodies, free faces, instances and colours, after the faces.
+void read_structure(Reader& r, geom::Model& m) {
+    const std::size_t faces = m.faces.size();
+    const std::uint32_t bodies = r.count("body count", 9);
+    for (std::uint32_t k = 0; k < bodies; ++k) {
+        geom::Body b;
+        b.name = r.str("body name");
+        b.closed = r.c.u8("body closed flag") != 0;
+        b.faces = face_list(r, "body", faces);
+        m.bodies.push_back(std::move(b));
+    }
+    m.free_faces = face_list(r, "free faces", faces);
+    const std::uint32_t instances = r.count("instance count", 104);
+    for (std::uint32_t k = 0; k < instances; ++k) {
+        geom::Instance i;
+        i.body = r.c.i32("instance body");
+        if (i.body < 0 || static_cast<std::uint32_t>(i.body) >= bodies) r.fail("instance body " + std::to_string(i.body) + " out of range");
+        for (int row = 0; row < 3; ++row) for (int col = 0; col < 4; ++col) i.transform.matrix()(row, col) = r.c.f64("instance transform");
+        i.name = r.str("instance name");
+        m.instances.push_back(std::move(i));
+    }
+    const std::uint32_t colors = r.count("colour count", 28);
+    for (std::uint32_t k = 0; k < colors; ++k) {
+        geom::Color c;
+        for (double& x : c.rgb) x = r.c.f64("colour");
+        c.name = r.str("colour name");
+        m.colors.push_back(std::move(c));
+    }
+    for (const geom::Face& f : m.faces)
+        if (f.color < -1 || f.color >= static_cast<int>(colors)) r.fail("face colour " + std::to_string(f.color) + " out of range");
+}
+
 fit::CompressedModel read_tkz_bytes(const std::string& bytes, const std::string& name) {
     ByteCursor cursor(bytes, 0, bytes.size(), name);
     Reader r{cursor, name};
@@ -285,47 +329,13 @@ fit::CompressedModel read_tkz_bytes(const std::string& bytes, const std::string&
     geom::Model& m = cm.model;
     m.units = r.str("units");
     m.scale_to_metres = cursor.f64("scale to metres");
-    const std::uint32_t edges = r.count("edge count", 1);
-    for (std::uint32_t k = 0; k < edges; ++k) {
-        geom::Edge e;
-        const int flags = cursor.u8("edge flags");
-        if (flags & 1) e.curve = r.curve<3>("edge curve");
-        if (flags & 2) e.start = r.point("edge start");
-        if (flags & 4) e.end = r.point("edge end");
-        m.edges.push_back(std::move(e));
-    }
+    read_edges(r, m);
     const std::uint32_t faces = r.count("face count", 14);
     for (std::uint32_t k = 0; k < faces; ++k) {
         cm.rules.emplace_back();
-        read_face(r, m, cm.rules.back(), edges);
+        read_face(r, m, cm.rules.back(), m.edges.size());
     }
-    const std::uint32_t bodies = r.count("body count", 9);
-    for (std::uint32_t k = 0; k < bodies; ++k) {
-        geom::Body b;
-        b.name = r.str("body name");
-        b.closed = cursor.u8("body closed flag") != 0;
-        b.faces = face_list(r, "body", faces);
-        m.bodies.push_back(std::move(b));
-    }
-    m.free_faces = face_list(r, "free faces", faces);
-    const std::uint32_t instances = r.count("instance count", 104);
-    for (std::uint32_t k = 0; k < instances; ++k) {
-        geom::Instance i;
-        i.body = cursor.i32("instance body");
-        if (i.body < 0 || static_cast<std::uint32_t>(i.body) >= bodies) r.fail("instance body " + std::to_string(i.body) + " out of range");
-        for (int row = 0; row < 3; ++row) for (int col = 0; col < 4; ++col) i.transform.matrix()(row, col) = cursor.f64("instance transform");
-        i.name = r.str("instance name");
-        m.instances.push_back(std::move(i));
-    }
-    const std::uint32_t colors = r.count("colour count", 28);
-    for (std::uint32_t k = 0; k < colors; ++k) {
-        geom::Color c;
-        for (double& x : c.rgb) x = cursor.f64("colour");
-        c.name = r.str("colour name");
-        m.colors.push_back(std::move(c));
-    }
-    for (const geom::Face& f : m.faces)
-        if (f.color < -1 || f.color >= static_cast<int>(colors)) r.fail("face colour " + std::to_string(f.color) + " out of range");
+    read_structure(r, m);
     if (cursor.remaining() != 0) r.fail(std::to_string(cursor.remaining()) + " bytes after the end of the model");
     return cm;
 }

@@ -243,16 +243,29 @@ void brep_body(IgesBuilder& b, const geom::Model& m, const geom::Body& body) {
 
 }  // namespace
 
+// Our reader (and OCCT's) numbers faces in the order of the root entities and of
+// each shell's faces; writing entities in face order keeps a model's face indices
+// (what `check A B` pairs) when each B-rep body is one run of consecutive faces.
+bool consecutive(const geom::Body& body) {
+    for (std::size_t k = 0; k < body.faces.size(); ++k)
+        if (body.faces[k] != body.faces[0] + static_cast<int>(k)) return false;
+    return true;
+}
+
 std::string iges_text(const geom::Model& m, const std::string& file_name) {
     IgesBuilder b;
-    std::vector<bool> written(m.faces.size(), false);
-    for (const geom::Body& body : m.bodies) {
-        if (!has_topology(m, body)) continue;
-        brep_body(b, m, body);
-        for (int f : body.faces) written[f] = true;
+    std::vector<int> brep_start(m.faces.size(), -1);  // body written as B-rep from this face
+    std::vector<bool> in_brep(m.faces.size(), false);
+    for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+        const geom::Body& body = m.bodies[i];
+        if (!has_topology(m, body) || !consecutive(body)) continue;
+        brep_start[body.faces.front()] = static_cast<int>(i);
+        for (int f : body.faces) in_brep[f] = true;
     }
-    for (std::size_t f = 0; f < m.faces.size(); ++f)
-        if (!written[f]) trimmed_face(b, m, m.faces[f]);
+    for (std::size_t f = 0; f < m.faces.size(); ++f) {
+        if (brep_start[f] >= 0) brep_body(b, m, m.bodies[brep_start[f]]);
+        else if (!in_brep[f]) trimmed_face(b, m, m.faces[f]);
+    }
     return b.text(m, file_name);
 }
 
