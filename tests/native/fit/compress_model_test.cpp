@@ -136,3 +136,39 @@ TEST(CompressModel, HalfCylinderIsRebuiltByTheFourSidedInterpolation) {
 
 }  // namespace
 }  // namespace trimkit::fit
+
+namespace trimkit::fit {
+namespace {
+
+geom::Model scaled(const geom::Model& m, double s) {
+    geom::Model out = m;
+    const Eigen::Affine3d T(Eigen::Scaling(s));
+    for (auto& f : out.faces) f.surface = f.surface.transformed(T);
+    for (auto& e : out.edges)
+        if (e.curve) e.curve = e.curve->transformed(T);
+    return out;
+}
+
+// The same G1 strip at 1e-6 and 1e6 of its size: the same decisions, rules and G1
+// flags, and the same error relative to each face's box (the fit is linear in the
+// coordinates; only the projections' Newton tolerances are relative).
+TEST(CompressModel, SameDecisionsAtTinyAndHugeScale) {
+    const geom::Model m = test::g1_strip();
+    std::vector<FaceCompression> base;
+    compress_model(m, {}, &base);
+    for (const double s : {1e-6, 1e6}) {
+        std::vector<FaceCompression> r;
+        compress_model(scaled(m, s), {}, &r);
+        ASSERT_EQ(r.size(), base.size());
+        for (std::size_t f = 0; f < r.size(); ++f) {
+            EXPECT_EQ(r[f].compressed, base[f].compressed) << "scale " << s << " face " << f << ": " << r[f].reason;
+            EXPECT_EQ(r[f].rule.count_u, base[f].rule.count_u) << s;
+            EXPECT_EQ(r[f].rule.g1, base[f].rule.g1) << s;
+            EXPECT_NEAR(r[f].error.ratio(), base[f].error.ratio(), 1e-6) << s;
+            EXPECT_NEAR(r[f].tolerance, s * base[f].tolerance, 1e-9 * s * base[f].tolerance);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace trimkit::fit
