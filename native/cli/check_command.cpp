@@ -9,14 +9,13 @@
 
 #include "arguments.h"
 #include "commands.h"
-#include "fit/extend_model.h"
 #include "fit/model_deviation.h"
 #include "io/json_writer.h"
-#include "io/tkz_format.h"
 #include "io/read_mesh.h"
 #include "geom/flatten_instances.h"
 #include "io/read_model.h"
 #include "tess/measure_deviation.h"
+#include "tkz_model.h"
 
 namespace trimkit::cli {
 namespace {
@@ -98,7 +97,7 @@ std::string to_text(const tess::DeviationReport& r, double seconds) {
 
 // A model file, or a .tkz extended (its compressed faces rebuilt).
 geom::Model read_model_or_tkz(const std::string& path) {
-    if (std::filesystem::path(path).extension() == ".tkz") return fit::extend_model(io::read_tkz(path));
+    if (std::filesystem::path(path).extension() == ".tkz") return extended_tkz(path);
     return io::read_model(path);
 }
 
