@@ -1,10 +1,30 @@
 #include "fit/boundary_samples.h"
 
+#include <algorithm>
 #include <string>
 
 #include "geom/error.h"
 
 namespace trimkit::fit {
+
+namespace {
+
+// Fraction of the domain for the chord that stands in for a vanishing derivative
+// (collapsed control points at a curve's end): the direction the curve leaves in.
+constexpr double kChordStep = 1e-4;
+
+// C'(t) normalised, or the unit chord towards a nearby point where C'(t) = 0;
+// zero when neither has a direction.
+Eigen::Vector3d unit_tangent(const geom::NurbsCurve3d& curve, double t) {
+    const Eigen::Vector3d d = curve.derivatives(t, 1)[1];
+    if (d.norm() > 0) return d.normalized();
+    const auto [a, b] = curve.domain();
+    const double h = kChordStep * (b - a);
+    const Eigen::Vector3d chord = curve.evaluate(std::min(b, t + h)) - curve.evaluate(std::max(a, t - h));
+    return chord.norm() > 0 ? Eigen::Vector3d(chord.normalized()) : Eigen::Vector3d::Zero();
+}
+
+}  // namespace
 
 Eigen::Vector3d coedge_point(const std::vector<geom::Edge>& edges, const geom::Coedge& coedge, double s) {
     const geom::NurbsCurve3d& curve = *edges[coedge.edge].curve;
@@ -23,21 +43,20 @@ std::vector<BoundarySample> boundary_samples(const geom::Face& face, const std::
                                          std::to_string(c) + " has no 3D edge curve");
             const geom::NurbsCurve3d& curve = *edges[coedge.edge].curve;
             const auto [a, b] = curve.domain();
+            if (!(curve.control_box().diagonal().norm() > 0)) continue;  // a degenerate edge (a pole): no samples
+            const int first = static_cast<int>(samples.size());
             for (int k = 0; k < per_coedge; ++k) {
                 const double s = static_cast<double>(k) / per_coedge;
                 const double t = coedge.edge_reversed ? b - s * (b - a) : a + s * (b - a);
-                const auto d = curve.derivatives(t, 1);
-                Eigen::Vector3d tangent = coedge.edge_reversed ? Eigen::Vector3d(-d[1]) : Eigen::Vector3d(d[1]);
+                Eigen::Vector3d tangent = unit_tangent(curve, t);
+                if (coedge.edge_reversed) tangent = -tangent;
                 if (!(tangent.norm() > 0))
                     throw geom::NumericalFailure("boundary_samples: edge " + std::to_string(coedge.edge) +
-                                                 " has a zero tangent at t = " + geom::format_value(t));
-                samples.push_back({d[0], tangent.normalized(), l, c, Eigen::Vector3d::Zero()});
-                if (k == 0) {
-                    const auto e = curve.derivatives(coedge.edge_reversed ? a : b, 1);
-                    const Eigen::Vector3d end = coedge.edge_reversed ? Eigen::Vector3d(-e[1]) : Eigen::Vector3d(e[1]);
-                    if (end.norm() > 0) samples.back().end_tangent = end.normalized();
-                }
+                                                 " has no tangent direction at t = " + geom::format_value(t));
+                samples.push_back({curve.evaluate(t), tangent, l, c, Eigen::Vector3d::Zero()});
             }
+            const Eigen::Vector3d end = unit_tangent(curve, coedge.edge_reversed ? a : b);
+            samples[first].end_tangent = coedge.edge_reversed ? Eigen::Vector3d(-end) : end;
         }
     return samples;
 }

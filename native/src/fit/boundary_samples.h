@@ -25,7 +25,9 @@ Eigen::Vector3d coedge_point(const std::vector<geom::Edge>& edges, const geom::C
 // `per_coedge` samples per coedge at equal parameter steps, its end excluded (the
 // next coedge starts there). Throws geom::InvalidInput if a coedge has no edge
 // with a 3D curve (coedge_edges gives every coedge one) and NumericalFailure if a
-// curve has a zero tangent at a sample.
+// curve has no direction at a sample. A zero derivative (collapsed control points)
+// is replaced by the chord's direction; a degenerate edge (one point: a pole) gives
+// no samples.
 std::vector<BoundarySample> boundary_samples(const geom::Face& face, const std::vector<geom::Edge>& edges,
                                              int per_coedge);
 

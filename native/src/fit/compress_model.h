@@ -46,7 +46,7 @@ struct CompressedModel {
 };
 
 // Control-point counts tried per direction, smallest first (degree 3).
-constexpr int kTriedCounts[] = {4, 6, 9, 13};
+constexpr int kTriedCounts[] = {4, 6, 9, 13, 18};
 
 CompressedModel compress_model(const geom::Model& model, const CompressOptions& options,
                                std::vector<FaceCompression>* report = nullptr);
