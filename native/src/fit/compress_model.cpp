@@ -1,6 +1,9 @@
 #include "fit/compress_model.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <numeric>
+#include <set>
 
 #include "fit/coedge_edges.h"
 #include "fit/coons_fill.h"
@@ -108,10 +111,9 @@ bool try_rules(const geom::Model& m, int face, FaceCompression& out) {
     return false;
 }
 
-// Judges the face's G1 coedges into out.rule.g1; returns the G1 neighbours.
+// The faces across the coedges out.rule.g1 marks (counted in out.g1_edges).
 std::vector<int> g1_neighbours(const geom::Model& m, int face, FaceCompression& out) {
     const EdgeFaces uses = edge_faces(m);
-    out.rule.g1 = judge_g1(m, uses, face);
     std::vector<int> neighbours;
     for (std::size_t l = 0; l < out.rule.g1.size(); ++l)
         for (std::size_t c = 0; c < out.rule.g1[l].size(); ++c)
@@ -159,17 +161,35 @@ bool compress_face(CompressedModel& result, int f, std::vector<bool>& pinned, Fa
 CompressedModel compress_model(const geom::Model& model, const CompressOptions& options,
                                std::vector<FaceCompression>* report) {
     CompressedModel result{model, std::vector<std::optional<FitRule>>(model.faces.size())};
+    // G1 judged once on the model as read (the edges compression adds are unshared, so
+    // never G1); faces with fewer G1 neighbours go first, since compressing a face pins
+    // its G1 neighbours (a fillet between two faces waits for both).
+    const EdgeFaces uses = edge_faces(model);
+    std::vector<std::vector<std::vector<bool>>> g1(model.faces.size());
+    std::vector<std::size_t> degree(model.faces.size(), 0);
+    for (int f = 0; f < static_cast<int>(model.faces.size()); ++f) {
+        g1[f] = judge_g1(model, uses, f);
+        std::set<int> neighbours;
+        for (std::size_t l = 0; l < g1[f].size(); ++l)
+            for (std::size_t c = 0; c < g1[f][l].size(); ++c)
+                if (g1[f][l][c]) neighbours.insert(neighbour_face(model, uses, f, static_cast<int>(l), static_cast<int>(c)));
+        degree[f] = neighbours.size();
+    }
+    std::vector<int> order(model.faces.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return degree[a] < degree[b]; });
     geom::Model& m = result.model;
     std::vector<bool> pinned(model.faces.size(), false);  // must keep its surface
     std::vector<FaceCompression> faces(model.faces.size());
     std::vector<bool> candidate(model.faces.size(), options.faces.empty());
     for (const int f : options.faces)
         if (f >= 0 && f < static_cast<int>(candidate.size())) candidate[f] = true;
-    for (int f = 0; f < static_cast<int>(m.faces.size()); ++f) {
+    for (const int f : order) {
         FaceCompression& out = faces[f];
         const double size = boundary_diagonal(m.faces[f]);
         out.tolerance = options.tolerance > 0 ? options.tolerance : options.relative_tolerance * size;
         out.rule.tolerance = out.tolerance;
+        out.rule.g1 = g1[f];
         if (!candidate[f]) out.reason = "not selected";
         else if (pinned[f]) out.reason = "G1 neighbour of a compressed face";
         else if (is_periodic_face(m.faces[f], size)) out.reason = "periodic surface (Sec. 6), kept";

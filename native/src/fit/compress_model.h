@@ -3,12 +3,12 @@
 // Sec. 4.4 (evaluate_fit); a face whose maximum error is within the tolerance
 // keeps only its FitRule, the others keep their surface; a fit along G1 edges must
 // also keep the normals within kMaxG1Angle there (g1_angle), and the rebuilt face
-// (extend_face) must lie within the tolerance of the source surface too. Faces are taken in
-// order; a face is compressed only if every G1 neighbour still has its surface
-// (extension rebuilds from neighbours' surfaces), and once it is, its G1
-// neighbours keep theirs. Periodic faces (a seam edge used twice, or a closed
-// surface whose loops span its period) keep their surface: Sec. 6 says the
-// method cannot build their reference planes.
+// (extend_face) must lie within the tolerance of the source surface too. A face is
+// compressed only if every G1 neighbour still has its surface (extension rebuilds
+// from neighbours' surfaces), and once it is, its G1 neighbours keep theirs; faces
+// with fewer G1 neighbours are tried first. Periodic faces (a seam edge used twice,
+// or a closed surface whose loops span its period) keep their surface: Sec. 6 says
+// the method cannot build their reference planes.
 #pragma once
 
 #include <optional>
