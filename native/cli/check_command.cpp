@@ -15,7 +15,6 @@
 #include "geom/flatten_instances.h"
 #include "io/read_model.h"
 #include "tess/measure_deviation.h"
-#include "tkz_model.h"
 
 namespace trimkit::cli {
 namespace {
@@ -95,12 +94,6 @@ std::string to_text(const tess::DeviationReport& r, double seconds) {
     return s + buf;
 }
 
-// A model file, or a .tkz extended (its compressed faces rebuilt).
-geom::Model read_model_or_tkz(const std::string& path) {
-    if (std::filesystem::path(path).extension() == ".tkz") return extended_tkz(path);
-    return io::read_model(path);
-}
-
 bool is_model_path(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -110,8 +103,8 @@ bool is_model_path(const std::string& path) {
 // trimkit check A B with two models: the two-sided surface deviation per face.
 int check_models(const std::string& a_path, const std::string& b_path) {
     // Every placed face on both sides (extend writes IGES with instances flattened).
-    const geom::Model a = geom::flatten_instances(read_model_or_tkz(a_path));
-    const geom::Model b = geom::flatten_instances(read_model_or_tkz(b_path));
+    const geom::Model a = geom::flatten_instances(io::read_model(a_path));
+    const geom::Model b = geom::flatten_instances(io::read_model(b_path));
     const std::vector<fit::FaceDeviation> d = fit::model_deviation(a, b);
     double worst = 0;
     int worst_face = -1;

@@ -7,7 +7,7 @@
 #include "commands.h"
 #include "geom/flatten_instances.h"
 #include "io/write_iges.h"
-#include "tkz_model.h"
+#include "io/tkz_format.h"
 
 namespace trimkit::cli {
 
@@ -21,7 +21,7 @@ int run_extend(const std::vector<std::string>& argv) {
         throw UsageError(std::string("expected -o MODEL.igs; usage: ") + usage);
     int rebuilt = 0;
     // IGES gets every placed face (subfigures and assemblies flattened), as `mesh` sees them.
-    const geom::Model model = geom::flatten_instances(extended_tkz(args.positionals()[0], &rebuilt));
+    const geom::Model model = geom::flatten_instances(io::read_tkz_model(args.positionals()[0], &rebuilt));
     io::write_iges(model, out);
     std::printf("faces: %zu, %d rebuilt from their edges; wrote %s\n", model.faces.size(), rebuilt, out.c_str());
     return 0;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "fit/extend_model.h"
 #include "fit/fit_curve.h"
 #include "geom/bspline_basis.h"
 #include "geom/error.h"
@@ -342,6 +343,22 @@ fit::CompressedModel read_tkz_bytes(const std::string& bytes, const std::string&
 
 fit::CompressedModel read_tkz(const std::string& path) {
     return read_tkz_bytes(read_file_bytes(path), path);
+}
+
+geom::Model read_tkz_model(const std::string& path, int* rebuilt) {
+    const fit::CompressedModel compressed = read_tkz(path);
+    if (rebuilt) {
+        *rebuilt = 0;
+        for (const auto& rule : compressed.rules) *rebuilt += rule.has_value();
+    }
+    try {
+        return fit::extend_model(compressed);
+    } catch (const geom::NumericalFailure& e) {
+        // The file's edges and rules are what the fit ran on: a degenerate fit is bad input.
+        throw geom::ReadError(path, 0, std::string("a face cannot be rebuilt: ") + e.what());
+    } catch (const geom::InvalidInput& e) {
+        throw geom::ReadError(path, 0, std::string("a face cannot be rebuilt: ") + e.what());
+    }
 }
 
 }  // namespace trimkit::io

@@ -20,6 +20,11 @@ void write_tkz(const fit::CompressedModel& model, const std::string& path);
 // every index against its range, every curve and surface through its validating
 // constructor: a damaged or hostile file throws geom::ReadError(file, 0, reason).
 fit::CompressedModel read_tkz(const std::string& path);
+
+// read_tkz then fit::extend_model: the model with its compressed faces rebuilt. A
+// face that cannot be rebuilt from the file's edges and rules is bad input too:
+// ReadError "FILE: a face cannot be rebuilt: ...". `rebuilt` (optional) gets their count.
+geom::Model read_tkz_model(const std::string& path, int* rebuilt = nullptr);
 fit::CompressedModel read_tkz_bytes(const std::string& bytes, const std::string& name);
 
 }  // namespace trimkit::io
