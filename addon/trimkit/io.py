@@ -94,12 +94,14 @@ def read_bytes(data, name):
     kind = file_format(data, name)
     if kind in ("step", "brep"):
         return read_step_bytes(data, name, kind)
+    if kind == "tkz":  # trimkit compress's output: the compressed faces rebuilt (Muraki)
+        return native().extend_model(native().read_tkz_bytes(bytes(data), name))
     if kind != "iges":
         raise ValueError(unsupported_message(name, kind))
     return native().read_model_bytes(data, name)
 
 
-READABLE = "IGES (.igs, .iges), STEP (.stp, .step) or Open CASCADE .brep"
+READABLE = "IGES (.igs, .iges), STEP (.stp, .step), Open CASCADE .brep or trimkit .tkz"
 # What other files are, by their first bytes or extension, and where Blender reads them.
 OTHER_FORMATS = {
     "tbp": ("a TBP solid", "File > Import > TBP (.tbp) [trimkit]"),
@@ -117,13 +119,13 @@ OTHER_FORMATS = {
     "empty": ("an empty file", None),
     "unknown": ("not a CAD file trimkit recognises", None),
 }
-SUFFIX_FORMATS = {".igs": "iges", ".iges": "iges", ".stp": "step", ".step": "step", ".p21": "step",
+SUFFIX_FORMATS = {".tkz": "tkz", ".igs": "iges", ".iges": "iges", ".stp": "step", ".step": "step", ".p21": "step",
                   ".brep": "brep", ".brp": "brep", ".tbp": "tbp", ".stl": "stl", ".obj": "obj", ".ply": "ply",
                   ".gltf": "gltf", ".glb": "gltf", ".fbx": "fbx", ".blend": "blend", ".3dm": "3dm",
                   ".sat": "sat", ".sab": "sat", ".x_t": "parasolid", ".x_b": "parasolid", ".zip": "zip"}
 
 
-MAGIC = ((b"glTF", "gltf"), (b"BLENDER", "blend"), (b"PK\x03\x04", "zip"), (b"Kaydara FBX", "fbx"),
+MAGIC = ((b"TKZ1", "tkz"), (b"glTF", "gltf"), (b"BLENDER", "blend"), (b"PK\x03\x04", "zip"), (b"Kaydara FBX", "fbx"),
          (b"\x1f\x8b", "gzip"))
 
 

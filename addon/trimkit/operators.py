@@ -115,7 +115,8 @@ class TrimkitImportPanel:
     def poll(cls, context):
         operator = context.space_data.active_operator
         return operator is not None and operator.bl_idname in ("IMPORT_SCENE_OT_trimkit_iges",
-                                                               "IMPORT_SCENE_OT_trimkit_step")
+                                                               "IMPORT_SCENE_OT_trimkit_step",
+                                                               "IMPORT_SCENE_OT_trimkit_tkz")
 
     def draw(self, context):
         layout = self.layout
@@ -179,6 +180,14 @@ class IMPORT_SCENE_OT_trimkit_step(bpy.types.Operator, ImportCadBase):
     bl_label = "Import STEP (trimkit)"
     filename_ext = ".stp"
     filter_glob: StringProperty(default="*.stp;*.step;*.brep;*.brp", options={'HIDDEN'})
+
+
+class IMPORT_SCENE_OT_trimkit_tkz(bpy.types.Operator, ImportCadBase):
+    """Import a trimkit compressed model (.tkz): faces rebuilt from their edges with G1, then meshed"""
+    bl_idname = "import_scene.trimkit_tkz"
+    bl_label = "Import trimkit compressed (.tkz)"
+    filename_ext = ".tkz"
+    filter_glob: StringProperty(default="*.tkz", options={'HIDDEN'})
 
 
 def run_with_progress(operator, context, work):
@@ -452,6 +461,7 @@ def menu_import(self, context):
     if io.has_step():
         self.layout.operator(IMPORT_SCENE_OT_trimkit_step.bl_idname, text="STEP (.stp, .step, .brep) [trimkit]")
     self.layout.operator(IMPORT_SCENE_OT_trimkit_tbp.bl_idname, text="TBP (.tbp) [trimkit]")
+    self.layout.operator(IMPORT_SCENE_OT_trimkit_tkz.bl_idname, text="trimkit compressed (.tkz)")
 
 
 def menu_object(self, context):
@@ -470,7 +480,7 @@ def menu_select_edit(self, context):
 
 def classes():
     """The operator classes to register: STEP only when _trimkit can read it."""
-    found = [IMPORT_SCENE_OT_trimkit_iges, OBJECT_OT_trimkit_retessellate, OBJECT_OT_trimkit_check,
+    found = [IMPORT_SCENE_OT_trimkit_iges, IMPORT_SCENE_OT_trimkit_tkz, OBJECT_OT_trimkit_retessellate, OBJECT_OT_trimkit_check,
              IMPORT_SCENE_OT_trimkit_tbp,
              OBJECT_OT_trimkit_mesh_to_tbp, OBJECT_OT_trimkit_trim, OBJECT_OT_trimkit_reload,
              MESH_OT_trimkit_select_cad_face, MESH_OT_trimkit_select_similar_cad_faces,

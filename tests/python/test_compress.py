@@ -40,3 +40,23 @@ def test_hammer_compresses_most_faces_within_their_tolerance():
 def test_bad_tkz_bytes_raise_read_error():
     with pytest.raises(RuntimeError, match="bad.tkz: not a .tkz file"):
         _trimkit.read_tkz_bytes(b"IGES1234", "bad.tkz")
+
+
+def test_addon_reads_tkz_bytes_as_a_model(tmp_path):
+    """The add-on's bpy-free io: .tkz bytes (by their TKZ1 magic) become the extended model,
+    so imports and re-meshes from a stored .tkz work like a stored IGES file."""
+    import pathlib
+    import sys
+    sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "addon"))
+    from trimkit import io  # noqa: E402  (the package's __init__ imports no bpy)
+
+    path = CAD / "iges" / "BIGES.igs"
+    if not path.exists():
+        pytest.skip(f"{path} not found (../shared/data/cad)")
+    compressed, report = _trimkit.compress_model(_trimkit.read_model(str(path)))
+    data = _trimkit.tkz_bytes(compressed)
+    assert io.file_format(data, "model.bin") == "tkz"
+    model = io.read_bytes(data, "BIGES.tkz")
+    assert len(model.faces) == len(report)
+    result = io.tessellate(model, 0.05, scale=1e-3, split="FACE", uv_mode="FACE")
+    assert result.faces == len(report) and not result.failed_faces
