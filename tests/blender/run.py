@@ -1218,6 +1218,32 @@ def test_screenshots_of_panel_import_options_and_checked_assembly():
     print("    " + ", ".join(f"{n} {w}x{h}" for n, (w, h) in sizes.items()) + f" in {out}")
 
 
+def test_tkz_import_meshes_rebuilt_faces_and_remeshes_from_the_stored_tkz():
+    """File > Import > trimkit compressed (.tkz): `trimkit compress` output, its faces
+    rebuilt from their edges (Muraki) and meshed; the .tkz is what the .blend stores,
+    and a re-mesh from it after save and reload works like one from an IGES file."""
+    source = cad_sample("BIGES.igs")
+    out = pathlib.Path(ARGS.out)
+    out.mkdir(parents=True, exist_ok=True)
+    tkz = out / "BIGES.tkz"
+    subprocess.run([str(ROOT / "build" / "bin" / "trimkit"), "compress", str(source), "-o", str(tkz)],
+                   check=True, capture_output=True)
+    empty_scene()
+    before = set(bpy.data.objects)
+    assert bpy.ops.import_scene.trimkit_tkz(filepath=str(tkz)) == {'FINISHED'}
+    objects = sorted((o for o in bpy.data.objects if o not in before), key=lambda o: o.name)
+    assert objects, "no objects from the .tkz"
+    faces = set()
+    for o in objects:
+        faces |= check_mesh(o)
+    assert len(faces) == 15, faces  # BIGES.igs: 15 faces, 14 of them rebuilt
+    blend = out / "tkz_import.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(blend))
+    bpy.ops.wm.open_mainfile(filepath=str(blend))
+    objects = [bpy.data.objects[o] for o in sorted(o.name for o in bpy.data.objects if o.type == 'MESH')]
+    coarse = triangles(objects)
+    assert retessellate_with_tolerance(objects, 0.25) > coarse
+
 def main():
     tests = [(n, f) for n, f in globals().items() if n.startswith("test_") and ARGS.k in n]
     if ARGS.k and tests[0][0] != "test_addon_installs_and_enables_from_zip":
