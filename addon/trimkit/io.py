@@ -101,6 +101,16 @@ def read_bytes(data, name):
     return native().read_model_bytes(data, name)
 
 
+def compress_to_tkz(model, tolerance=0.0):
+    """(.tkz bytes, faces compressed, faces) of a model, as `trimkit compress` (Muraki):
+    each face refitted from its edges with G1; tolerance in model units, 0 for 1 % of
+    each face's box."""
+    options = native().CompressOptions()
+    options.tolerance = tolerance
+    compressed, report = native().compress_model(model, options)
+    return bytes(native().tkz_bytes(compressed)), sum(r.compressed for r in report), len(report)
+
+
 READABLE = "IGES (.igs, .iges), STEP (.stp, .step), Open CASCADE .brep or trimkit .tkz"
 # What other files are, by their first bytes or extension, and where Blender reads them.
 OTHER_FORMATS = {

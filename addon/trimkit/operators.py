@@ -1,5 +1,5 @@
-"""Operators: File > Import > IGES (and STEP when the module has it) and TBP,
-re-meshing and checking selected trimkit objects, a closed mesh to a TBP solid, and trimming
+"""Operators: File > Import > IGES (and STEP when the module has it), TBP and trimkit
+compressed (.tkz), File > Export > trimkit compressed (.tkz), re-meshing and checking selected trimkit objects, a closed mesh to a TBP solid, and trimming
 one TBP object by another. Each gathers its properties and delegates to
 importer.py or tbp_objects.py."""
 import math
@@ -9,7 +9,7 @@ import pathlib
 import time
 
 from bpy.props import BoolProperty, CollectionProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
-from bpy_extras.io_utils import ImportHelper
+from bpy_extras.io_utils import ExportHelper, ImportHelper
 
 from . import cad_faces, importer, io, lods, mesh_check, properties, stored_source, tbp_objects
 from .settings import DEFAULTS
@@ -188,6 +188,40 @@ class IMPORT_SCENE_OT_trimkit_tkz(bpy.types.Operator, ImportCadBase):
     bl_label = "Import trimkit compressed (.tkz)"
     filename_ext = ".tkz"
     filter_glob: StringProperty(default="*.tkz", options={'HIDDEN'})
+
+
+class EXPORT_SCENE_OT_trimkit_tkz(bpy.types.Operator, ExportHelper):
+    """Write the active object's CAD model as a trimkit compressed .tkz: faces that refit from their edges within the tolerance keep only their rule"""
+    bl_idname = "export_scene.trimkit_tkz"
+    bl_label = "Export trimkit compressed (.tkz)"
+    filename_ext = ".tkz"
+    filter_glob: StringProperty(default="*.tkz", options={'HIDDEN'})
+    tolerance: FloatProperty(name="Tolerance", default=0.0, min=0.0,
+                             description="Largest distance of a rebuilt face from its surface, in the file's units; "
+                                         "0: 1 % of each face's size")
+
+    @classmethod
+    def poll(cls, context):
+        o = context.active_object
+        return o is not None and importer.is_trimkit(o) and o.trimkit.kind == 'CAD'
+
+    def execute(self, context):
+        props = context.active_object.trimkit
+
+        def work(progress):
+            data = stored_source.load(props.source)
+            model = io.read_bytes(data, stored_source.file_name(props.source))
+            packed, done, faces = io.compress_to_tkz(model, self.tolerance)
+            pathlib.Path(self.filepath).write_bytes(packed)
+            return len(data), len(packed), done, faces
+
+        result = run_with_progress(self, context, work)
+        if result is None:
+            return {'CANCELLED'}
+        source, packed, done, faces = result
+        self.report({'INFO'}, f"{self.filepath}: {done} of {faces} faces compressed, {packed} bytes "
+                              f"(the stored file: {source})")
+        return {'FINISHED'}
 
 
 def run_with_progress(operator, context, work):
@@ -464,6 +498,10 @@ def menu_import(self, context):
     self.layout.operator(IMPORT_SCENE_OT_trimkit_tkz.bl_idname, text="trimkit compressed (.tkz)")
 
 
+def menu_export(self, context):
+    self.layout.operator(EXPORT_SCENE_OT_trimkit_tkz.bl_idname, text="trimkit compressed (.tkz)")
+
+
 def menu_object(self, context):
     self.layout.separator()
     self.layout.operator(OBJECT_OT_trimkit_mesh_to_tbp.bl_idname)
@@ -480,7 +518,7 @@ def menu_select_edit(self, context):
 
 def classes():
     """The operator classes to register: STEP only when _trimkit can read it."""
-    found = [IMPORT_SCENE_OT_trimkit_iges, IMPORT_SCENE_OT_trimkit_tkz, OBJECT_OT_trimkit_retessellate, OBJECT_OT_trimkit_check,
+    found = [IMPORT_SCENE_OT_trimkit_iges, IMPORT_SCENE_OT_trimkit_tkz, EXPORT_SCENE_OT_trimkit_tkz, OBJECT_OT_trimkit_retessellate, OBJECT_OT_trimkit_check,
              IMPORT_SCENE_OT_trimkit_tbp,
              OBJECT_OT_trimkit_mesh_to_tbp, OBJECT_OT_trimkit_trim, OBJECT_OT_trimkit_reload,
              MESH_OT_trimkit_select_cad_face, MESH_OT_trimkit_select_similar_cad_faces,
@@ -494,6 +532,7 @@ def register():
     for cls in classes():
         bpy.utils.register_class(cls)
     bpy.types.TOPBAR_MT_file_import.append(menu_import)
+    bpy.types.TOPBAR_MT_file_export.append(menu_export)
     bpy.types.VIEW3D_MT_object.append(menu_object)
     bpy.types.VIEW3D_MT_select_edit_mesh.append(menu_select_edit)
 
@@ -501,6 +540,7 @@ def register():
 def unregister():
     bpy.types.VIEW3D_MT_select_edit_mesh.remove(menu_select_edit)
     bpy.types.VIEW3D_MT_object.remove(menu_object)
+    bpy.types.TOPBAR_MT_file_export.remove(menu_export)
     bpy.types.TOPBAR_MT_file_import.remove(menu_import)
     for cls in reversed(classes()):
         bpy.utils.unregister_class(cls)

@@ -1243,6 +1243,13 @@ def test_tkz_import_meshes_rebuilt_faces_and_remeshes_from_the_stored_tkz():
     objects = [bpy.data.objects[o] for o in sorted(o.name for o in bpy.data.objects if o.type == 'MESH')]
     coarse = triangles(objects)
     assert retessellate_with_tolerance(objects, 0.25) > coarse
+    # File > Export > trimkit compressed (.tkz) from an IGES import: the same file compress writes.
+    empty_scene()
+    objects = import_iges(source)
+    select_only(objects)
+    exported = out / "BIGES_export.tkz"
+    assert bpy.ops.export_scene.trimkit_tkz(filepath=str(exported)) == {'FINISHED'}
+    assert exported.read_bytes() == tkz.read_bytes()
 
 def main():
     tests = [(n, f) for n, f in globals().items() if n.startswith("test_") and ARGS.k in n]

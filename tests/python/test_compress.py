@@ -60,3 +60,6 @@ def test_addon_reads_tkz_bytes_as_a_model(tmp_path):
     assert len(model.faces) == len(report)
     result = io.tessellate(model, 0.05, scale=1e-3, split="FACE", uv_mode="FACE")
     assert result.faces == len(report) and not result.failed_faces
+    # File > Export's half: the same bytes as compress_model + tkz_bytes.
+    packed, done, faces = io.compress_to_tkz(_trimkit.read_model(str(path)))
+    assert packed == bytes(data) and done == len(compressed.compressed_faces) and faces == len(report)
