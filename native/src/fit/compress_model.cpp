@@ -86,16 +86,30 @@ std::vector<FitRule> candidate_rules(const geom::Model& m, int face, const FitRu
     return rules;
 }
 
-// Tries the rules in order; true with `out` filled for the first one accepted.
-bool try_rules(const geom::Model& m, int face, FaceCompression& out) {
+// Tries the rules in order; true with `out` filled for the first one accepted. With
+// `rebuild`, when none is, the first (fewest control points) that keeps G1 is taken:
+// the fit never sees the face's own surface, and a damaged one is no guide to which
+// rule is right.
+bool try_rules(const geom::Model& m, int face, FaceCompression& out, bool rebuild) {
     const EdgeFaces uses = edge_faces(m);
     double best = 1e300;
     std::string rejected;  // why the last fit within the tolerance was not accepted
+    std::optional<FaceCompression> fallback;  // rebuild: the first fit that keeps G1
     for (FitRule rule : candidate_rules(m, face, out.rule)) {
         try {
             const RefitResult fit = refit_face(m, uses, face, rule);
             const FitError error = evaluate_fit(m.faces[face], m.edges, fit.surface);
             if (error.max() < best) best = error.max(), out.error = error;
+            if (rebuild && !fallback) {
+                FaceCompression candidate = out;
+                candidate.g1_angle = g1_angle(m, uses, face, rule, fit.surface);
+                if (candidate.g1_angle <= kMaxG1Angle) {
+                    rule.reversed = fitted_reversed(m.faces[face], fit.surface);
+                    candidate.rule = rule;
+                    candidate.error = error;
+                    fallback = candidate;
+                }
+            }
             if (!(error.max() <= out.tolerance)) continue;
             rejected = rejection(m, uses, face, rule, fit.surface, out);
             if (!rejected.empty()) continue;
@@ -108,7 +122,11 @@ bool try_rules(const geom::Model& m, int face, FaceCompression& out) {
     }
     if (!rejected.empty()) out.reason = rejected;
     else if (best < 1e300) out.reason = "max error " + figure(best) + " > tolerance " + figure(out.tolerance);
-    return false;
+    if (!fallback) return false;
+    fallback->reason = "rebuilt beyond the tolerance: max error " + figure(fallback->error.max()) + " > " +
+                       figure(out.tolerance);
+    out = *fallback;
+    return true;
 }
 
 // The faces across the coedges out.rule.g1 marks (counted in out.g1_edges).
@@ -126,7 +144,7 @@ std::vector<int> g1_neighbours(const geom::Model& m, int face, FaceCompression& 
 
 // One face of compress_model: true when compressed (result and pinned updated);
 // otherwise the face and the edges are left as they were.
-bool compress_face(CompressedModel& result, int f, std::vector<bool>& pinned, FaceCompression& out) {
+bool compress_face(CompressedModel& result, int f, std::vector<bool>& pinned, FaceCompression& out, bool rebuild) {
     geom::Model& m = result.model;
     const geom::Face before = m.faces[f];
     const std::vector<geom::Edge> edges_before = m.edges;
@@ -140,9 +158,9 @@ bool compress_face(CompressedModel& result, int f, std::vector<bool>& pinned, Fa
     const std::size_t added = added_numbers(edges_before, m.edges), kept = kept_numbers(before);
     if (blocked) {
         out.reason = "a G1 neighbour is compressed";
-    } else if (!try_rules(m, f, out)) {
+    } else if (!try_rules(m, f, out, rebuild)) {
         // out.reason says why
-    } else if (added >= kept) {
+    } else if (added >= kept && !rebuild) {
         out.reason = "its new edge curves (" + std::to_string(added) + " numbers) cost more than its surface and trim curves (" +
                      std::to_string(kept) + ")";
     } else {
@@ -167,8 +185,11 @@ CompressedModel compress_model(const geom::Model& model, const CompressOptions& 
     const EdgeFaces uses = edge_faces(model);
     std::vector<std::vector<std::vector<bool>>> g1(model.faces.size());
     std::vector<std::size_t> degree(model.faces.size(), 0);
+    std::vector<bool> selected(model.faces.size(), options.faces.empty());
+    for (const int f : options.faces)
+        if (f >= 0 && f < static_cast<int>(selected.size())) selected[f] = true;
     for (int f = 0; f < static_cast<int>(model.faces.size()); ++f) {
-        g1[f] = judge_g1(model, uses, f);
+        g1[f] = judge_g1(model, uses, f, options.rebuild && selected[f] ? kRebuildG1JudgeAngle : kG1JudgeAngle);
         std::set<int> neighbours;
         for (std::size_t l = 0; l < g1[f].size(); ++l)
             for (std::size_t c = 0; c < g1[f][l].size(); ++c)
@@ -193,7 +214,7 @@ CompressedModel compress_model(const geom::Model& model, const CompressOptions& 
         if (!candidate[f]) out.reason = "not selected";
         else if (pinned[f]) out.reason = "G1 neighbour of a compressed face";
         else if (is_periodic_face(m.faces[f], size)) out.reason = "periodic surface (Sec. 6), kept";
-        else compress_face(result, f, pinned, out);
+        else compress_face(result, f, pinned, out, options.rebuild);
     }
     if (report) *report = std::move(faces);
     return result;

@@ -25,6 +25,12 @@ struct CompressOptions {
     double tolerance = 0;              // model units; 0: relative_tolerance of each face's box
     double relative_tolerance = 0.01;  // the paper's 1 % (Sec. 4.4)
     std::vector<int> faces;            // the faces that may be compressed; empty: all
+    // Rebuild the faces even when no fit is within the tolerance (the first rule that
+    // keeps G1 is taken, its reason says so; their G1 is judged within
+    // kRebuildG1JudgeAngle) and whatever they
+    // cost stored: `object.trimkit_rebuild_faces`, for faces whose own surface is
+    // damaged or failed to mesh (their error is measured against that surface).
+    bool rebuild = false;
 };
 
 struct FaceCompression {

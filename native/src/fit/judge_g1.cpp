@@ -7,21 +7,22 @@
 namespace trimkit::fit {
 namespace {
 
-bool normals_agree(const geom::NurbsCurve3d& curve, const geom::SurfaceProjector& a, const geom::SurfaceProjector& b) {
+bool normals_agree(const geom::NurbsCurve3d& curve, const geom::SurfaceProjector& a, const geom::SurfaceProjector& b,
+                   double angle) {
     const auto [t0, t1] = curve.domain();
     for (int k = 0; k < kG1JudgeSamples; ++k) {
         const double t = t0 + (t1 - t0) * (k + 0.5) / kG1JudgeSamples;
         const Eigen::Vector3d x = curve.evaluate(t);
         const Eigen::Vector2d ua = a.invert(x), ub = b.invert(x);
         const double c = std::abs(a.surface().normal(ua.x(), ua.y()).dot(b.surface().normal(ub.x(), ub.y())));
-        if (!(c >= std::cos(kG1JudgeAngle))) return false;
+        if (!(c >= std::cos(angle))) return false;
     }
     return true;
 }
 
 }  // namespace
 
-std::vector<std::vector<bool>> judge_g1(const geom::Model& model, const EdgeFaces& uses, int face) {
+std::vector<std::vector<bool>> judge_g1(const geom::Model& model, const EdgeFaces& uses, int face, double angle) {
     const geom::Face& f = model.faces[face];
     const geom::SurfaceProjector own(f.surface);
     std::vector<std::vector<bool>> g1(f.loops.size());
@@ -33,7 +34,7 @@ std::vector<std::vector<bool>> judge_g1(const geom::Model& model, const EdgeFace
             if (other >= 0 && edge && edge->curve) {
                 const geom::SurfaceProjector neighbour(model.faces[other].surface);
                 try {
-                    smooth = normals_agree(*edge->curve, own, neighbour);
+                    smooth = normals_agree(*edge->curve, own, neighbour, angle);
                 } catch (const std::exception&) {
                     smooth = false;  // a degenerate normal: not judged G1
                 }

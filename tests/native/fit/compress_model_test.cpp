@@ -172,3 +172,40 @@ TEST(CompressModel, SameDecisionsAtTinyAndHugeScale) {
 
 }  // namespace
 }  // namespace trimkit::fit
+
+namespace trimkit::fit {
+namespace {
+
+// The middle face of the G1 strip with its surface damaged (an interior control
+// point pushed 0.5 up: a bump over the 2 x 4 face that tilts its normals along the
+// edges by a few degrees): compression keeps it (the fit follows the edges, not the
+// bump); rebuild judges G1 within 10° and replaces the face from its edges and G1
+// neighbours, which gives back the undamaged surface within 1 % and G1.
+TEST(CompressModel, RebuildRepairsADamagedSurfaceFromItsEdgesAndNeighbours) {
+    const geom::Model good = test::g1_strip();
+    geom::Model damaged = good;
+    const geom::NurbsSurface& S = good.faces[1].surface;
+    std::vector<Eigen::Vector3d> P = S.points();
+    P[3 * S.count_v() + 2].z() += 0.5;
+    damaged.faces[1].surface = geom::NurbsSurface(S.degree_u(), S.degree_v(), S.knots_u(), S.knots_v(), S.count_u(),
+                                                  S.count_v(), P);
+    CompressOptions options;
+    options.faces = {1};
+    std::vector<FaceCompression> report;
+    compress_model(damaged, options, &report);
+    ASSERT_FALSE(report[1].compressed) << "the bump is beyond 1 %";
+    options.rebuild = true;
+    const CompressedModel c = compress_model(damaged, options, &report);
+    ASSERT_TRUE(report[1].compressed) << report[1].reason;
+    const geom::Model e = extend_model(c);
+    const FitError repaired = rebuilt_error(good, e, 1);  // against the undamaged face
+    const double angle = max_g1_angle(e, 1, report[1].rule);
+    std::printf("rebuilt face: %s; against the undamaged surface max %.3g (ratio %.3f%%), G1 max %.3f deg\n",
+                report[1].reason.c_str(), repaired.max(), 100 * repaired.ratio(), angle);
+    EXPECT_LT(repaired.ratio(), 0.01);
+    EXPECT_EQ(report[1].g1_edges, 3) << "the left edge and both pieces of the right";
+    EXPECT_LT(angle, kG1MaxDegrees);
+}
+
+}  // namespace
+}  // namespace trimkit::fit
