@@ -111,6 +111,19 @@ def compress_to_tkz(model, tolerance=0.0):
     return bytes(native().tkz_bytes(compressed)), sum(r.compressed for r in report), len(report)
 
 
+def rebuild_faces(model, faces, tolerance=0.0):
+    """(.tkz bytes, [(face, rebuilt, reason, max error)]) with `faces` rebuilt from their
+    boundary edges with G1 to their neighbours (Muraki; CompressOptions.rebuild: even
+    where their own surface is damaged), every other face kept as it is."""
+    options = native().CompressOptions()
+    options.tolerance = tolerance
+    options.faces = list(faces)
+    options.rebuild = True
+    compressed, report = native().compress_model(model, options)
+    rows = [(f, report[f].compressed, report[f].reason, report[f].max_error) for f in faces]
+    return bytes(native().tkz_bytes(compressed)), rows
+
+
 READABLE = "IGES (.igs, .iges), STEP (.stp, .step), Open CASCADE .brep or trimkit .tkz"
 # What other files are, by their first bytes or extension, and where Blender reads them.
 OTHER_FORMATS = {

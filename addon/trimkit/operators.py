@@ -418,6 +418,40 @@ class OBJECT_OT_trimkit_reload(bpy.types.Operator):
         return {'FINISHED'}
 
 
+class OBJECT_OT_trimkit_rebuild_faces(bpy.types.Operator):
+    """Rebuild the selected CAD faces from their boundary edges with G1 to their neighbours (repairs a damaged surface), then re-mesh"""
+    bl_idname = "object.trimkit_rebuild_faces"
+    bl_label = "Rebuild CAD Faces from Edges"
+    bl_options = {'REGISTER', 'UNDO'}
+
+    @classmethod
+    def poll(cls, context):
+        o = context.active_object
+        return context.mode == 'EDIT_MESH' and importer.is_trimkit(o) and o.trimkit.kind == 'CAD'
+
+    def execute(self, context):
+        obj = context.active_object
+        try:
+            faces = cad_faces.selected_cad_faces(obj)
+        except ValueError as err:
+            self.report({'ERROR'}, str(err))
+            return {'CANCELLED'}
+        if not faces:
+            self.report({'ERROR'}, f"{obj.name}: select faces of the CAD faces to rebuild")
+            return {'CANCELLED'}
+        bpy.ops.object.mode_set(mode='OBJECT')
+        rows = run_with_progress(self, context, lambda progress: importer.rebuild_faces(obj, faces))
+        bpy.ops.object.mode_set(mode='EDIT')
+        if rows is None:
+            return {'CANCELLED'}
+        rebuilt = [f for f, done, _, _ in rows if done]
+        for f, done, reason, error in rows:
+            if not done:
+                self.report({'WARNING'}, f"CAD face {f} not rebuilt: {reason}")
+        self.report({'INFO'}, f"{obj.name}: CAD faces {rebuilt} rebuilt from their edges and re-meshed")
+        return {'FINISHED'} if rebuilt else {'CANCELLED'}
+
+
 class MESH_OT_trimkit_select_cad_face(bpy.types.Operator):
     """Select every face of the CAD face the active face belongs to (its cad_face)"""
     bl_idname = "mesh.trimkit_select_cad_face"
@@ -510,6 +544,11 @@ def menu_object(self, context):
     self.layout.operator(OBJECT_OT_trimkit_reload.bl_idname)
 
 
+def menu_faces_edit(self, context):
+    self.layout.separator()
+    self.layout.operator(OBJECT_OT_trimkit_rebuild_faces.bl_idname)
+
+
 def menu_select_edit(self, context):
     self.layout.separator()
     self.layout.operator(MESH_OT_trimkit_select_cad_face.bl_idname)
@@ -521,7 +560,7 @@ def classes():
     found = [IMPORT_SCENE_OT_trimkit_iges, IMPORT_SCENE_OT_trimkit_tkz, EXPORT_SCENE_OT_trimkit_tkz, OBJECT_OT_trimkit_retessellate, OBJECT_OT_trimkit_check,
              IMPORT_SCENE_OT_trimkit_tbp,
              OBJECT_OT_trimkit_mesh_to_tbp, OBJECT_OT_trimkit_trim, OBJECT_OT_trimkit_reload,
-             MESH_OT_trimkit_select_cad_face, MESH_OT_trimkit_select_similar_cad_faces,
+             MESH_OT_trimkit_select_cad_face, MESH_OT_trimkit_select_similar_cad_faces, OBJECT_OT_trimkit_rebuild_faces,
              OBJECT_OT_trimkit_make_lods, *IMPORT_PANELS]
     if io.has_step():
         found.insert(1, IMPORT_SCENE_OT_trimkit_step)
@@ -535,9 +574,11 @@ def register():
     bpy.types.TOPBAR_MT_file_export.append(menu_export)
     bpy.types.VIEW3D_MT_object.append(menu_object)
     bpy.types.VIEW3D_MT_select_edit_mesh.append(menu_select_edit)
+    bpy.types.VIEW3D_MT_edit_mesh_faces.append(menu_faces_edit)
 
 
 def unregister():
+    bpy.types.VIEW3D_MT_edit_mesh_faces.remove(menu_faces_edit)
     bpy.types.VIEW3D_MT_select_edit_mesh.remove(menu_select_edit)
     bpy.types.VIEW3D_MT_object.remove(menu_object)
     bpy.types.TOPBAR_MT_file_export.remove(menu_export)

@@ -38,7 +38,9 @@ void bind_fit(py::module_& m) {
         .def(py::init<>())
         .def_readwrite("tolerance", &fit::CompressOptions::tolerance, "model units; 0: relative_tolerance of each face's box")
         .def_readwrite("relative_tolerance", &fit::CompressOptions::relative_tolerance)
-        .def_readwrite("faces", &fit::CompressOptions::faces, "faces that may be compressed; empty: all");
+        .def_readwrite("faces", &fit::CompressOptions::faces, "faces that may be compressed; empty: all")
+        .def_readwrite("rebuild", &fit::CompressOptions::rebuild,
+                       "rebuild the faces even beyond the tolerance of their own (damaged) surface");
     py::class_<fit::FaceCompression>(m, "FaceCompression")
         .def_readonly("compressed", &fit::FaceCompression::compressed)
         .def_readonly("reason", &fit::FaceCompression::reason)
