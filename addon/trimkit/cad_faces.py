@@ -31,6 +31,13 @@ def select_cad_face(obj, extend=False):
     return [target], count
 
 
+def selected_cad_faces(obj):
+    """The CAD faces (cad_face values) of the selected mesh faces, in Edit Mode."""
+    bm = bmesh.from_edit_mesh(obj.data)
+    layer = face_layer(bm, obj)
+    return sorted({f[layer] for f in bm.faces if f.select})
+
+
 def select_faces(bm, obj, layer, wanted, extend):
     count = 0
     for face in bm.faces:

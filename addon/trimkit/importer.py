@@ -235,6 +235,22 @@ def retessellate(objects, render=False, progress=None):
     return results
 
 
+def rebuild_faces(obj, faces):
+    """Rebuilds CAD faces of obj's stored model from their edges with G1 to their
+    neighbours (io.rebuild_faces), stores the result (a .tkz) in place of the source
+    and re-meshes every object made from it. Returns io.rebuild_faces' rows."""
+    props = obj.trimkit
+    text = props.source
+    name = stored_source.file_name(text)
+    model = io.read_bytes(stored_source.load(text), name)
+    tolerance, relative = object_tolerance(props)
+    data, rows = io.rebuild_faces(model, faces, 0.0 if relative else tolerance)
+    stored_source.replace(text, data)
+    text["trimkit_file"] = pathlib.Path(name).stem + ".tkz"
+    retessellate([o for o in bpy.data.objects if is_trimkit(o) and o.trimkit.source == text])
+    return rows
+
+
 def object_metres(props):
     """Metres per model unit of the object's mesh (its scale times the scene's unit scale)."""
     return props.scale * (bpy.context.scene.unit_settings.scale_length or 1.0)

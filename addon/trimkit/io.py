@@ -94,12 +94,37 @@ def read_bytes(data, name):
     kind = file_format(data, name)
     if kind in ("step", "brep"):
         return read_step_bytes(data, name, kind)
+    if kind == "tkz":  # trimkit compress's output: the compressed faces rebuilt (Muraki)
+        return native().extend_model(native().read_tkz_bytes(bytes(data), name))
     if kind != "iges":
         raise ValueError(unsupported_message(name, kind))
     return native().read_model_bytes(data, name)
 
 
-READABLE = "IGES (.igs, .iges), STEP (.stp, .step) or Open CASCADE .brep"
+def compress_to_tkz(model, tolerance=0.0):
+    """(.tkz bytes, faces compressed, faces) of a model, as `trimkit compress` (Muraki):
+    each face refitted from its edges with G1; tolerance in model units, 0 for 1 % of
+    each face's box."""
+    options = native().CompressOptions()
+    options.tolerance = tolerance
+    compressed, report = native().compress_model(model, options)
+    return bytes(native().tkz_bytes(compressed)), sum(r.compressed for r in report), len(report)
+
+
+def rebuild_faces(model, faces, tolerance=0.0):
+    """(.tkz bytes, [(face, rebuilt, reason, max error)]) with `faces` rebuilt from their
+    boundary edges with G1 to their neighbours (Muraki; CompressOptions.rebuild: even
+    where their own surface is damaged), every other face kept as it is."""
+    options = native().CompressOptions()
+    options.tolerance = tolerance
+    options.faces = list(faces)
+    options.rebuild = True
+    compressed, report = native().compress_model(model, options)
+    rows = [(f, report[f].compressed, report[f].reason, report[f].max_error) for f in faces]
+    return bytes(native().tkz_bytes(compressed)), rows
+
+
+READABLE = "IGES (.igs, .iges), STEP (.stp, .step), Open CASCADE .brep or trimkit .tkz"
 # What other files are, by their first bytes or extension, and where Blender reads them.
 OTHER_FORMATS = {
     "tbp": ("a TBP solid", "File > Import > TBP (.tbp) [trimkit]"),
@@ -117,13 +142,13 @@ OTHER_FORMATS = {
     "empty": ("an empty file", None),
     "unknown": ("not a CAD file trimkit recognises", None),
 }
-SUFFIX_FORMATS = {".igs": "iges", ".iges": "iges", ".stp": "step", ".step": "step", ".p21": "step",
+SUFFIX_FORMATS = {".tkz": "tkz", ".igs": "iges", ".iges": "iges", ".stp": "step", ".step": "step", ".p21": "step",
                   ".brep": "brep", ".brp": "brep", ".tbp": "tbp", ".stl": "stl", ".obj": "obj", ".ply": "ply",
                   ".gltf": "gltf", ".glb": "gltf", ".fbx": "fbx", ".blend": "blend", ".3dm": "3dm",
                   ".sat": "sat", ".sab": "sat", ".x_t": "parasolid", ".x_b": "parasolid", ".zip": "zip"}
 
 
-MAGIC = ((b"glTF", "gltf"), (b"BLENDER", "blend"), (b"PK\x03\x04", "zip"), (b"Kaydara FBX", "fbx"),
+MAGIC = ((b"TKZ1", "tkz"), (b"glTF", "gltf"), (b"BLENDER", "blend"), (b"PK\x03\x04", "zip"), (b"Kaydara FBX", "fbx"),
          (b"\x1f\x8b", "gzip"))
 
 

@@ -1,5 +1,5 @@
-"""Operators: File > Import > IGES (and STEP when the module has it) and TBP,
-re-meshing and checking selected trimkit objects, a closed mesh to a TBP solid, and trimming
+"""Operators: File > Import > IGES (and STEP when the module has it), TBP and trimkit
+compressed (.tkz), File > Export > trimkit compressed (.tkz), re-meshing and checking selected trimkit objects, a closed mesh to a TBP solid, and trimming
 one TBP object by another. Each gathers its properties and delegates to
 importer.py or tbp_objects.py."""
 import math
@@ -9,7 +9,7 @@ import pathlib
 import time
 
 from bpy.props import BoolProperty, CollectionProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
-from bpy_extras.io_utils import ImportHelper
+from bpy_extras.io_utils import ExportHelper, ImportHelper
 
 from . import cad_faces, importer, io, lods, mesh_check, properties, stored_source, tbp_objects
 from .settings import DEFAULTS
@@ -115,7 +115,8 @@ class TrimkitImportPanel:
     def poll(cls, context):
         operator = context.space_data.active_operator
         return operator is not None and operator.bl_idname in ("IMPORT_SCENE_OT_trimkit_iges",
-                                                               "IMPORT_SCENE_OT_trimkit_step")
+                                                               "IMPORT_SCENE_OT_trimkit_step",
+                                                               "IMPORT_SCENE_OT_trimkit_tkz")
 
     def draw(self, context):
         layout = self.layout
@@ -179,6 +180,48 @@ class IMPORT_SCENE_OT_trimkit_step(bpy.types.Operator, ImportCadBase):
     bl_label = "Import STEP (trimkit)"
     filename_ext = ".stp"
     filter_glob: StringProperty(default="*.stp;*.step;*.brep;*.brp", options={'HIDDEN'})
+
+
+class IMPORT_SCENE_OT_trimkit_tkz(bpy.types.Operator, ImportCadBase):
+    """Import a trimkit compressed model (.tkz): faces rebuilt from their edges with G1, then meshed"""
+    bl_idname = "import_scene.trimkit_tkz"
+    bl_label = "Import trimkit compressed (.tkz)"
+    filename_ext = ".tkz"
+    filter_glob: StringProperty(default="*.tkz", options={'HIDDEN'})
+
+
+class EXPORT_SCENE_OT_trimkit_tkz(bpy.types.Operator, ExportHelper):
+    """Write the active object's CAD model as a trimkit compressed .tkz: faces that refit from their edges within the tolerance keep only their rule"""
+    bl_idname = "export_scene.trimkit_tkz"
+    bl_label = "Export trimkit compressed (.tkz)"
+    filename_ext = ".tkz"
+    filter_glob: StringProperty(default="*.tkz", options={'HIDDEN'})
+    tolerance: FloatProperty(name="Tolerance", default=0.0, min=0.0,
+                             description="Largest distance of a rebuilt face from its surface, in the file's units; "
+                                         "0: 1 % of each face's size")
+
+    @classmethod
+    def poll(cls, context):
+        o = context.active_object
+        return o is not None and importer.is_trimkit(o) and o.trimkit.kind == 'CAD'
+
+    def execute(self, context):
+        props = context.active_object.trimkit
+
+        def work(progress):
+            data = stored_source.load(props.source)
+            model = io.read_bytes(data, stored_source.file_name(props.source))
+            packed, done, faces = io.compress_to_tkz(model, self.tolerance)
+            pathlib.Path(self.filepath).write_bytes(packed)
+            return len(data), len(packed), done, faces
+
+        result = run_with_progress(self, context, work)
+        if result is None:
+            return {'CANCELLED'}
+        source, packed, done, faces = result
+        self.report({'INFO'}, f"{self.filepath}: {done} of {faces} faces compressed, {packed} bytes "
+                              f"(the stored file: {source})")
+        return {'FINISHED'}
 
 
 def run_with_progress(operator, context, work):
@@ -375,6 +418,40 @@ class OBJECT_OT_trimkit_reload(bpy.types.Operator):
         return {'FINISHED'}
 
 
+class OBJECT_OT_trimkit_rebuild_faces(bpy.types.Operator):
+    """Rebuild the selected CAD faces from their boundary edges with G1 to their neighbours (repairs a damaged surface), then re-mesh"""
+    bl_idname = "object.trimkit_rebuild_faces"
+    bl_label = "Rebuild CAD Faces from Edges"
+    bl_options = {'REGISTER', 'UNDO'}
+
+    @classmethod
+    def poll(cls, context):
+        o = context.active_object
+        return context.mode == 'EDIT_MESH' and importer.is_trimkit(o) and o.trimkit.kind == 'CAD'
+
+    def execute(self, context):
+        obj = context.active_object
+        try:
+            faces = cad_faces.selected_cad_faces(obj)
+        except ValueError as err:
+            self.report({'ERROR'}, str(err))
+            return {'CANCELLED'}
+        if not faces:
+            self.report({'ERROR'}, f"{obj.name}: select faces of the CAD faces to rebuild")
+            return {'CANCELLED'}
+        bpy.ops.object.mode_set(mode='OBJECT')
+        rows = run_with_progress(self, context, lambda progress: importer.rebuild_faces(obj, faces))
+        bpy.ops.object.mode_set(mode='EDIT')
+        if rows is None:
+            return {'CANCELLED'}
+        rebuilt = [f for f, done, _, _ in rows if done]
+        for f, done, reason, error in rows:
+            if not done:
+                self.report({'WARNING'}, f"CAD face {f} not rebuilt: {reason}")
+        self.report({'INFO'}, f"{obj.name}: CAD faces {rebuilt} rebuilt from their edges and re-meshed")
+        return {'FINISHED'} if rebuilt else {'CANCELLED'}
+
+
 class MESH_OT_trimkit_select_cad_face(bpy.types.Operator):
     """Select every face of the CAD face the active face belongs to (its cad_face)"""
     bl_idname = "mesh.trimkit_select_cad_face"
@@ -452,6 +529,11 @@ def menu_import(self, context):
     if io.has_step():
         self.layout.operator(IMPORT_SCENE_OT_trimkit_step.bl_idname, text="STEP (.stp, .step, .brep) [trimkit]")
     self.layout.operator(IMPORT_SCENE_OT_trimkit_tbp.bl_idname, text="TBP (.tbp) [trimkit]")
+    self.layout.operator(IMPORT_SCENE_OT_trimkit_tkz.bl_idname, text="trimkit compressed (.tkz)")
+
+
+def menu_export(self, context):
+    self.layout.operator(EXPORT_SCENE_OT_trimkit_tkz.bl_idname, text="trimkit compressed (.tkz)")
 
 
 def menu_object(self, context):
@@ -462,6 +544,11 @@ def menu_object(self, context):
     self.layout.operator(OBJECT_OT_trimkit_reload.bl_idname)
 
 
+def menu_faces_edit(self, context):
+    self.layout.separator()
+    self.layout.operator(OBJECT_OT_trimkit_rebuild_faces.bl_idname)
+
+
 def menu_select_edit(self, context):
     self.layout.separator()
     self.layout.operator(MESH_OT_trimkit_select_cad_face.bl_idname)
@@ -470,10 +557,10 @@ def menu_select_edit(self, context):
 
 def classes():
     """The operator classes to register: STEP only when _trimkit can read it."""
-    found = [IMPORT_SCENE_OT_trimkit_iges, OBJECT_OT_trimkit_retessellate, OBJECT_OT_trimkit_check,
+    found = [IMPORT_SCENE_OT_trimkit_iges, IMPORT_SCENE_OT_trimkit_tkz, EXPORT_SCENE_OT_trimkit_tkz, OBJECT_OT_trimkit_retessellate, OBJECT_OT_trimkit_check,
              IMPORT_SCENE_OT_trimkit_tbp,
              OBJECT_OT_trimkit_mesh_to_tbp, OBJECT_OT_trimkit_trim, OBJECT_OT_trimkit_reload,
-             MESH_OT_trimkit_select_cad_face, MESH_OT_trimkit_select_similar_cad_faces,
+             MESH_OT_trimkit_select_cad_face, MESH_OT_trimkit_select_similar_cad_faces, OBJECT_OT_trimkit_rebuild_faces,
              OBJECT_OT_trimkit_make_lods, *IMPORT_PANELS]
     if io.has_step():
         found.insert(1, IMPORT_SCENE_OT_trimkit_step)
@@ -484,13 +571,17 @@ def register():
     for cls in classes():
         bpy.utils.register_class(cls)
     bpy.types.TOPBAR_MT_file_import.append(menu_import)
+    bpy.types.TOPBAR_MT_file_export.append(menu_export)
     bpy.types.VIEW3D_MT_object.append(menu_object)
     bpy.types.VIEW3D_MT_select_edit_mesh.append(menu_select_edit)
+    bpy.types.VIEW3D_MT_edit_mesh_faces.append(menu_faces_edit)
 
 
 def unregister():
+    bpy.types.VIEW3D_MT_edit_mesh_faces.remove(menu_faces_edit)
     bpy.types.VIEW3D_MT_select_edit_mesh.remove(menu_select_edit)
     bpy.types.VIEW3D_MT_object.remove(menu_object)
+    bpy.types.TOPBAR_MT_file_export.remove(menu_export)
     bpy.types.TOPBAR_MT_file_import.remove(menu_import)
     for cls in reversed(classes()):
         bpy.utils.unregister_class(cls)

@@ -6,6 +6,7 @@
 namespace py = pybind11;
 
 namespace trimkit::bindings {
+void bind_fit(py::module_& m);
 void bind_geom(py::module_& m);
 void bind_io(py::module_& m);
 void bind_mesh(py::module_& m);
@@ -22,6 +23,7 @@ PYBIND11_MODULE(_trimkit, m) {
     trimkit::bindings::bind_geom(m);
     trimkit::bindings::bind_mesh(m);
     trimkit::bindings::bind_tess(m);
+    trimkit::bindings::bind_fit(m);
     trimkit::bindings::bind_io(m);
     trimkit::bindings::bind_tbp(m);
 }

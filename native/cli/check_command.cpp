@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "arguments.h"
 #include "commands.h"
+#include "fit/model_deviation.h"
 #include "io/json_writer.h"
 #include "io/read_mesh.h"
 #include "geom/flatten_instances.h"
@@ -17,7 +19,7 @@
 namespace trimkit::cli {
 namespace {
 
-const char* const kCheckUsage = "trimkit check MODEL MESH [--json] [--samples N] [--threads N]";
+const char* const kCheckUsage = "trimkit check MODEL MESH [--json] [--samples N] [--threads N] | trimkit check MODEL_A MODEL_B";
 
 int count_option(const Arguments& args, const std::string& name, int fallback, int minimum) {
     const double x = args.number(name, fallback);
@@ -92,11 +94,35 @@ std::string to_text(const tess::DeviationReport& r, double seconds) {
     return s + buf;
 }
 
+bool is_model_path(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".igs" || ext == ".iges" || ext == ".stp" || ext == ".step" || ext == ".brep" || ext == ".tkz";
+}
+
+// trimkit check A B with two models: the two-sided surface deviation per face.
+int check_models(const std::string& a_path, const std::string& b_path) {
+    // Every placed face on both sides (extend writes IGES with instances flattened).
+    const geom::Model a = geom::flatten_instances(io::read_model(a_path));
+    const geom::Model b = geom::flatten_instances(io::read_model(b_path));
+    const std::vector<fit::FaceDeviation> d = fit::model_deviation(a, b);
+    double worst = 0;
+    int worst_face = -1;
+    for (std::size_t f = 0; f < d.size(); ++f) {
+        std::printf("face %zu: A->B avg %.4g max %.4g, B->A avg %.4g max %.4g\n", f, d[f].a_to_b_avg, d[f].a_to_b_max,
+                    d[f].b_to_a_avg, d[f].b_to_a_max);
+        if (d[f].max() >= worst) worst = d[f].max(), worst_face = static_cast<int>(f);
+    }
+    std::printf("faces %zu, two-sided surface deviation max %.6g (face %d)\n", d.size(), worst, worst_face);
+    return 0;
+}
+
 }  // namespace
 
 int run_check(const std::vector<std::string>& argv) {
     const Arguments args(argv, {"--json"}, {"--samples", "--threads"});
     args.expect_positionals(2, kCheckUsage);
+    if (is_model_path(args.positionals()[1])) return check_models(args.positionals()[0], args.positionals()[1]);
     tess::DeviationOptions options;
     options.samples = count_option(args, "--samples", options.samples, 1);
     options.threads = count_option(args, "--threads", options.threads, 0);

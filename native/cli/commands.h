@@ -21,4 +21,10 @@ int run_check(const std::vector<std::string>& args);
 // trimkit tbp mesh|intersect|trim|inside|from-mesh ... (TBP solids, [Garcia])
 int run_tbp(const std::vector<std::string>& args);
 
+// trimkit compress MODEL -o OUT.tkz [--tolerance T] ([Muraki])
+int run_compress(const std::vector<std::string>& args);
+
+// trimkit extend IN.tkz -o MODEL.igs
+int run_extend(const std::vector<std::string>& args);
+
 }  // namespace trimkit::cli

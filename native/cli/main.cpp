@@ -24,6 +24,12 @@ const char* const kUsage =
     "                         --strict: exit 3 if a face failed its check (one stderr line each)\n"
     "  check MODEL MESH [--json] [--samples N] [--threads N]\n"
     "                         two-sided deviation of MESH from MODEL's faces, area ratio, open edges\n"
+    "  check MODEL_A MODEL_B  two-sided surface deviation per face between two models (.igs .stp .brep .tkz)\n"
+    "  compress MODEL -o OUT.tkz [--tolerance T]\n"
+    "                         refit each face from its boundary edges with G1 (Muraki); faces within T\n"
+    "                         (default 1% of each face's box) keep only the rule\n"
+    "  extend IN.tkz -o MODEL.igs\n"
+    "                         rebuild the compressed faces and write IGES (B-rep where the model has it)\n"
     "  tbp mesh|intersect|trim|inside|from-mesh ...\n"
     "                         TBP solids (.tbp): mesh at a level/lod, intersect, trim, point-in-solid, PN triangles\n";
 
@@ -41,6 +47,8 @@ int main(int argc, char** argv) {
         {"mesh", trimkit::cli::run_mesh},
         {"check", trimkit::cli::run_check},
         {"tbp", trimkit::cli::run_tbp},
+        {"compress", trimkit::cli::run_compress},
+        {"extend", trimkit::cli::run_extend},
     };
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cout << kUsage;

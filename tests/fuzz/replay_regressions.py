@@ -5,7 +5,7 @@
 
 REGRESSIONS_DIR/FORMAT/* are inputs that once crashed, hung or leaked in a reader.
 Each goes through the command that reads its format: `info` and a coarse `mesh`
-for IGES and STEP, `tbp mesh` for .tbp, `tbp from-mesh` for OBJ, PLY, STL and GLB.
+for IGES and STEP, `tbp mesh` for .tbp, `extend` for .tkz, `tbp from-mesh` for OBJ, PLY, STL and GLB.
 Every run must end within TIME_LIMIT seconds with exit status 0 or 2 (bad input),
 never a signal or an internal error (1); on 2, stderr must be one line
 `trimkit: FILE[:LINE]: reason` naming the input. Exits non-zero listing failures.
@@ -20,7 +20,7 @@ TIME_LIMIT = 20.0  # seconds per command; the readers take milliseconds on these
 # The input's extension as each reader wants it (the regression files keep
 # libFuzzer's names, crash-<sha1>, with the format's extension added).
 EXTENSIONS = {"iges": ".igs", "step": ".stp", "tbp": ".tbp", "obj": ".obj", "ply": ".ply",
-              "stl": ".stl", "glb": ".glb"}
+              "stl": ".stl", "glb": ".glb", "tkz": ".tkz"}
 
 
 def commands(trimkit, fmt, path, out_dir):
@@ -28,6 +28,8 @@ def commands(trimkit, fmt, path, out_dir):
         return [[trimkit, "info", path],
                 [trimkit, "mesh", path, "-o", str(out_dir / "out.obj"), "--tolerance", "0.02",
                  "--relative", "--threads", "1"]]
+    if fmt == "tkz":
+        return [[trimkit, "extend", path, "-o", str(out_dir / "out.igs")]]
     if fmt == "tbp":
         return [[trimkit, "tbp", "mesh", path, "--output", str(out_dir / "out.obj"), "--levels", "1",
                  "--lod", "1"]]

@@ -8,6 +8,7 @@
 #include "io/read_brep.h"
 #include "io/read_iges.h"
 #include "io/read_step.h"
+#include "io/tkz_format.h"
 
 namespace trimkit::io {
 
@@ -18,8 +19,9 @@ geom::Model read_model(const std::string& path) {
     if (ext == ".igs" || ext == ".iges") return read_iges(path);
     if (ext == ".stp" || ext == ".step") return read_step(path);
     if (ext == ".brep" || ext == ".brp") return read_brep(path);
+    if (ext == ".tkz") return read_tkz_model(path);
     throw geom::ReadError(path, 0, "unsupported file type '" + ext +
-                                       "'; expected .igs, .iges, .stp, .step or .brep");
+                                       "'; expected .igs, .iges, .stp, .step, .brep or .tkz");
 }
 
 }  // namespace trimkit::io
