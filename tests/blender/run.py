@@ -293,6 +293,105 @@ def test_damaged_file_reports_error_and_leaves_scene_unchanged():
     print(f"    damaged file: {message.strip().splitlines()[-1]}")
 
 
+def scene_counts():
+    return {"objects": len(bpy.data.objects), "meshes": len(bpy.data.meshes), "texts": len(bpy.data.texts),
+            "collections": len(bpy.data.collections), "materials": len(bpy.data.materials)}
+
+
+def cancelling_limits(stage, after):
+    """limits.Limits whose cancel flag is set once `stage` reports more than `after`
+    (what Esc does in the window, from the working thread's side)."""
+    from trimkit import limits, modal_work
+    work = modal_work.new_limits()
+    seen = []
+
+    def on_progress(name, fraction):
+        seen.append((name, fraction))
+        if name == stage and fraction > after:
+            work.cancel.set()
+    work.on_progress = on_progress
+    return work, seen, limits.Cancelled
+
+
+def test_cancelled_import_leaves_the_scene_unchanged():
+    """Cancel while meshing (IGES) and while reading (STEP, inside OCCT's transfer):
+    limits.Cancelled, and the object, mesh, text, collection and material counts are
+    what they were."""
+    from trimkit import importer
+    empty_scene()
+    import_iges(BRACKET)  # something in the scene already
+    cases = [(BRACKET, "mesh", 0.0)]
+    try:
+        cases.append((step_sample("as1-oc-214-mat.stp"), "read", 0.35))
+    except Skip as why:
+        print(f"    (no STEP case: {why})")
+    for path, stage, after in cases:
+        before = scene_counts()
+        limits, seen, cancelled = cancelling_limits(stage, after)
+        start = time.perf_counter()
+        try:
+            importer.import_file(bpy.context, path, importer.ImportSettings(), limits=limits)
+        except cancelled as err:
+            message = str(err)
+        else:
+            raise AssertionError(f"{path.name}: not cancelled; progress {seen[-3:]}")
+        assert scene_counts() == before, (path.name, before, scene_counts())
+        assert limits.cancel.is_set() and "cancelled" in message, message
+        last = seen[-1]
+        print(f"    {path.name}: cancelled in {stage} at {last[0]} {last[1]:.2f} after "
+              f"{time.perf_counter() - start:.2f} s; counts {before}")
+
+
+def test_import_and_check_reports_give_the_total_time_and_its_parts():
+    """The import's timing (Object.trimkit.import_timing, also reported): total = read +
+    mesh + objects within rounding; the check's seconds split into read and check."""
+    import re
+    from trimkit import mesh_check, operators
+    empty_scene()
+    objects = import_iges(BRACKET, split='MODEL')
+    timing = objects[0].trimkit.import_timing
+    match = re.fullmatch(r"bracket\.igs: ([0-9.]+) s \(read ([0-9.]+) s, mesh ([0-9.]+) s, objects ([0-9.]+) s\)",
+                         timing)
+    assert match, timing
+    total, read, mesh, made = map(float, match.groups())
+    assert abs(total - (read + mesh + made)) <= 0.015, timing
+    assert mesh > 0.0 and total > 0.0, timing
+    seconds = {}
+    mesh_check.check_object(objects[0], seconds)
+    assert seconds["read"] > 0.0 and seconds["check"] > 0.0, seconds
+    line = operators.check_timing(1, seconds["read"] + seconds["check"] + 0.004, seconds)
+    match = re.fullmatch(r"checked 1 mesh\(es\) in ([0-9.]+) s \(read ([0-9.]+) s, check ([0-9.]+) s, "
+                         r"other ([0-9.]+) s\)", line)
+    assert match and abs(float(match[1]) - sum(map(float, match.groups()[1:]))) <= 0.015, line
+    assert bpy.ops.object.trimkit_check() == {'FINISHED'}
+    print(f"    {timing}; {line}")
+
+
+def test_modal_import_finishes_and_a_cancelled_one_leaves_the_scene_unchanged():
+    """The import as the file browser starts it, in a Blender window under Xvfb
+    (tests/blender/modal_import.py): RUNNING_MODAL, the window's timers keep running
+    while it reads and meshes, the objects appear at the end; a second import cancelled
+    while reading leaves the scene's counts unchanged."""
+    xvfb = shutil.which("xvfb-run")
+    if xvfb is None:
+        raise Skip("xvfb-run not installed (apt-get install xvfb)")
+    try:
+        source = step_sample("as1-oc-214-mat.stp")
+    except Skip:
+        source = BRACKET
+    empty_scene()
+    start = TMP / "modal" / "start.blend"  # opening a file skips the splash screen
+    start.parent.mkdir(parents=True, exist_ok=True)
+    assert bpy.ops.wm.save_as_mainfile(filepath=str(start)) == {'FINISHED'}
+    command = [xvfb, "-a", "-s", "-screen 0 1280x800x24", bpy.app.binary_path, "--factory-startup",
+               "-p", "0", "0", "1280", "800", str(start), "--python", str(ROOT / "tests" / "blender" / "modal_import.py"),
+               "--", "--input", str(source)]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    lines = [l for l in run.stdout.splitlines() if l.startswith("modal:")]
+    assert run.returncode == 0 and "modal: done" in lines, (run.returncode, run.stdout[-3000:], run.stderr[-2000:])
+    print("    " + "\n    ".join(lines[:-1]))
+
+
 def test_damaged_step_reports_error_without_crashing_blender():
     # A damaged type name made Open CASCADE dereference a null handle (a segfault that
     # took Blender down); now the operator reports it and the scene is unchanged.

@@ -1,0 +1,121 @@
+"""The CAD import's modal path in a real Blender window (run under Xvfb by run.py's
+test_modal_import_finishes_and_a_cancelled_one_leaves_the_scene_unchanged):
+
+    xvfb-run -a -s "-screen 0 1280x800x24" blender --factory-startup -p 0 0 1280 800 FILE.blend \
+        --python tests/blender/modal_import.py -- --input as1-oc-214-mat.stp
+
+Starts the import as the file browser does (run_modal): it must return RUNNING_MODAL,
+read and mesh in its working thread while the window keeps handling events (the
+timer ticks), then make the objects. Then a second import is cancelled with the flag
+Esc sets (modal_work.ACTIVE; Xvfb gets no key presses from here): it must end with
+the scene's counts unchanged. Prints "modal: ..." lines; exits 1 on any error.
+"""
+import argparse
+import os
+import pathlib
+import sys
+import time
+import traceback
+
+import bpy
+
+argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+parser = argparse.ArgumentParser()
+parser.add_argument("--input", required=True)
+ARGS = parser.parse_args(argv)
+PATH = pathlib.Path(ARGS.input)
+# Seconds the whole script may take before it gives up.
+DEADLINE = 240.0
+STATE = {"start": time.perf_counter(), "ticks": 0}
+
+
+def fail(message=None):
+    if message:
+        print(f"modal: FAIL {message}")
+    else:
+        traceback.print_exc()
+    sys.stdout.flush()
+    os._exit(1)
+
+
+def counts():
+    return (len(bpy.data.objects), len(bpy.data.meshes), len(bpy.data.texts), len(bpy.data.collections))
+
+
+def start_import():
+    window = bpy.context.window_manager.windows[0]
+    operator = bpy.ops.import_scene.trimkit_step if PATH.suffix.lower() in (".stp", ".step") \
+        else bpy.ops.import_scene.trimkit_iges
+    with bpy.context.temp_override(window=window, screen=window.screen, area=window.screen.areas[0]):
+        result = operator('EXEC_DEFAULT', filepath=str(PATH), run_modal=True)
+    if result != {'RUNNING_MODAL'}:
+        fail(f"import returned {result}, expected RUNNING_MODAL")
+
+
+def first():
+    try:
+        bpy.ops.preferences.addon_enable(module="trimkit")
+        STATE["before"] = counts()
+        STATE["t0"] = time.perf_counter()
+        start_import()
+        print(f"modal: started {PATH.name}: RUNNING_MODAL")
+        bpy.app.timers.register(wait_finished, first_interval=0.05)
+    except Exception:
+        fail()
+
+
+def ticking():
+    STATE["ticks"] += 1
+    return 0.05 if time.perf_counter() - STATE["start"] < DEADLINE else fail("deadline passed")
+
+
+def wait_finished():
+    from trimkit import modal_work
+    try:
+        if modal_work.ACTIVE:
+            return 0.05
+        after = counts()
+        if not after[0] > STATE["before"][0]:
+            fail(f"no objects after the modal import: {STATE['before']} -> {after}")
+        print(f"modal: finished in {time.perf_counter() - STATE['t0']:.2f} s, {STATE['ticks']} timer ticks "
+              f"meanwhile, objects {STATE['before'][0]} -> {after[0]}")
+        STATE["before"] = after
+        STATE["t0"] = time.perf_counter()
+        start_import()
+        bpy.app.timers.register(cancel_when_reading, first_interval=0.01)
+    except Exception:
+        fail()
+    return None
+
+
+def cancel_when_reading():
+    from trimkit import modal_work
+    if not modal_work.ACTIVE:
+        fail("the second import ended before it could be cancelled")
+    limits = modal_work.ACTIVE[-1]
+    stage, fraction = limits.state()
+    if stage == "read" and fraction < 0.2:
+        return 0.01
+    limits.cancel.set()
+    STATE["cancelled_at"] = (stage, fraction, time.perf_counter() - STATE["t0"])
+    bpy.app.timers.register(wait_cancelled, first_interval=0.05)
+    return None
+
+
+def wait_cancelled():
+    from trimkit import modal_work
+    if modal_work.ACTIVE:
+        return 0.05
+    after = counts()
+    if after != STATE["before"]:
+        fail(f"the cancelled import changed the scene: {STATE['before']} -> {after}")
+    stage, fraction, at = STATE["cancelled_at"]
+    print(f"modal: cancelled at {stage} {fraction:.2f} after {at:.2f} s, ended "
+          f"{time.perf_counter() - STATE['t0'] - at:.2f} s later; counts unchanged {after}")
+    print("modal: done")
+    sys.stdout.flush()
+    os._exit(0)
+
+
+bpy.app.timers.register(ticking, first_interval=0.05)
+bpy.app.timers.register(first, first_interval=0.5)
