@@ -307,7 +307,8 @@ def cancelling_limits(stage, after):
 
     def on_progress(name, fraction):
         seen.append((name, fraction))
-        if name == stage and fraction > after:
+        if name == stage and fraction > after and not work.cancel.is_set():
+            seen.append(("cancel set", fraction))
             work.cancel.set()
     work.on_progress = on_progress
     return work, seen, limits.Cancelled
@@ -337,9 +338,10 @@ def test_cancelled_import_leaves_the_scene_unchanged():
             raise AssertionError(f"{path.name}: not cancelled; progress {seen[-3:]}")
         assert scene_counts() == before, (path.name, before, scene_counts())
         assert limits.cancel.is_set() and "cancelled" in message, message
+        at = next(f for name, f in seen if name == "cancel set")
         last = seen[-1]
-        print(f"    {path.name}: cancelled in {stage} at {last[0]} {last[1]:.2f} after "
-              f"{time.perf_counter() - start:.2f} s; counts {before}")
+        print(f"    {path.name}: cancel set in {stage} at {at:.2f}, last progress {last[0]} {last[1]:.2f}, "
+              f"stopped after {time.perf_counter() - start:.2f} s; counts {before}")
 
 
 def test_import_and_check_reports_give_the_total_time_and_its_parts():
@@ -1143,7 +1145,7 @@ def test_importer_conventions_files_metadata_presets_panels_select_and_reload():
     names = {p.name for folder_ in presets for p in pathlib.Path(folder_).glob("*.py")}
     assert {"Preview.py", "Render.py", "Export.py"} <= names, names
     groups = [c for c in bpy.types.Panel.__subclasses__() if c.__name__.startswith("IMPORT_PT_trimkit_")]
-    assert sorted(c.bl_label for c in groups) == ["Mesh", "Objects", "Shading & UVs", "Units"], groups
+    assert sorted(c.bl_label for c in groups) == ["Limits", "Mesh", "Objects", "Shading & UVs", "Units"], groups
     assert all(c.bl_parent_id == "FILE_PT_operator" and c.bl_space_type == 'FILE_BROWSER' for c in groups)
 
     # Select CAD Face / Select Similar CAD Faces in Edit Mode.
@@ -1188,7 +1190,7 @@ def test_importer_conventions_files_metadata_presets_panels_select_and_reload():
     (folder / "a.igs").unlink()
     message = expect_cancelled(bpy.ops.object.trimkit_reload)
     assert "a.igs" in message and "cannot read" in message, message
-    print(f"    2 files in one import, metadata, 4 option groups, STEP presets; Select CAD Face: "
+    print(f"    2 files in one import, metadata, {len(groups)} option groups, STEP presets; Select CAD Face: "
           f"{int((faces == 1).sum())} faces; reload: {objects[1].trimkit.triangles} -> {obj.trimkit.triangles} "
           f"triangles, {obj.trimkit.failed_faces} failed face; gone: {message.strip().splitlines()[-1][:60]}")
 

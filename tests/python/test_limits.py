@@ -125,3 +125,31 @@ def test_cli_face_timeout_bounds_the_slow_fuzz_input(tmp_path):
     for face in timed_out:
         assert 0.5 <= face["seconds"] < 2.0, face
         assert "timeout: stopped after" in face["reason"]
+
+
+def addon_modules():
+    import pathlib
+    import sys
+    sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "addon"))
+    from trimkit import io, limits  # the package's __init__ imports no bpy
+    return io, limits
+
+
+def test_addon_limits_cancel_reading_and_meshing(bracket, cad_sample):
+    io, limits = addon_modules()
+    work = limits.Limits(cancel=_trimkit.CancelFlag())
+    work.cancel.set()
+    with pytest.raises(limits.Cancelled, match="bracket.igs: cancelled"):
+        io.read_source(bracket, work)
+    model, _ = io.read_source(bracket, limits.Limits())
+    with pytest.raises(limits.Cancelled):
+        io.tessellate(model, 0.05, limits=work)
+    stages = []
+    fine = limits.Limits(cancel=_trimkit.CancelFlag(), on_progress=lambda s, f: stages.append((s, f)))
+    result = io.tessellate(model, 0.05, limits=fine)
+    assert result.triangles > 0 and stages[-1] == ("mesh", 1.0), stages
+    if _trimkit.step_supported():  # STEP goes through a temporary copy: the message names the file
+        with pytest.raises(limits.Cancelled, match="as1-oc-214-mat.stp: cancelled"):
+            io.read_source(cad_sample(STEP), work)
+        with pytest.raises(RuntimeError, match=r"as1-oc-214-mat.stp: reading stopped after .* \(read timeout\)"):
+            io.read_source(cad_sample(STEP), limits.Limits(read_timeout=1e-6))
