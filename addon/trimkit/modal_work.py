@@ -20,6 +20,14 @@ POLL_SECONDS = 0.1
 # The limits of the work running modally now (tests/blender/modal_import.py cancels through them).
 ACTIVE = []
 STAGE_NAMES = {"read": "reading", "mesh": "meshing", "check": "checking", "objects": "making objects"}
+# Where each stage starts on the progress bar, and its share of it.
+STAGE_SPANS = {"read": (0.0, 0.5), "mesh": (0.5, 0.5)}
+
+
+def overall(stage, fraction):
+    """The progress bar's position for `fraction` of `stage`."""
+    start, share = STAGE_SPANS.get(stage, (0.0, 1.0))
+    return start + share * fraction
 
 
 class WorkThread(threading.Thread):
@@ -75,8 +83,7 @@ class ModalWork:
         if event.type != 'TIMER':
             return {'PASS_THROUGH'}
         if self._thread.is_alive():
-            stage, fraction = self._limits.state()
-            context.window_manager.progress_update(fraction)
+            context.window_manager.progress_update(overall(*self._limits.state()))
             context.workspace.status_text_set(status_text(self._label, self._limits, self._started))
             return {'RUNNING_MODAL'}
         wm = context.window_manager

@@ -248,7 +248,8 @@ class OBJECT_OT_trimkit_retessellate(bpy.types.Operator):
         objects = [o for o in context.selected_objects if importer.is_trimkit(o)]
         if not objects and importer.is_trimkit(context.active_object):
             objects = [context.active_object]
-        results = run_with_progress(self, context, lambda progress: importer.retessellate(objects, progress=progress))
+        results = run_with_progress(self, context, lambda progress: importer.retessellate(objects, progress=progress),
+                                    label=f"re-meshing {len(objects)} object(s)")
         if results is None:
             return {'CANCELLED'}
         for result in results:
