@@ -80,6 +80,8 @@ class PreparedFile:
     scale: float            # model units -> Blender units
     read_seconds: float
     mesh_seconds: float
+    started: float          # time.perf_counter() when the read began
+    finished: float         # and when the mesh was done
 
 
 def prepare_file(filepath, settings, metres_per_unit, limits=None):
@@ -88,29 +90,39 @@ def prepare_file(filepath, settings, metres_per_unit, limits=None):
     stages "read" and "mesh", cancel: limits.Cancelled). RuntimeError/ValueError for
     a bad file or bad settings."""
     path = pathlib.Path(filepath)
-    start = time.perf_counter()
+    started = time.perf_counter()
     if limits:
         limits.begin("read")
     model, data = io.read_source(path, limits)
-    read_seconds = time.perf_counter() - start
+    read_end = time.perf_counter()
     if limits:
         limits.check()
         limits.begin("mesh")
-    start = time.perf_counter()
+    mesh_start = time.perf_counter()
     scale = unit_scale_of(model, metres_per_unit, settings.scale, settings.units)
     tolerance = settings.relative_tolerance if settings.relative else settings.tolerance / scale
     result = io.tessellate(model, tolerance, relative=settings.relative, angle=settings.angle,
                            mode=settings.mode, trim_method=settings.trim_method, scale=scale,
                            split=settings.split, stem=path.stem, uv_mode=settings.uv_mode,
                            metres=scale * metres_per_unit, limits=limits)
-    return PreparedFile(path, model, data, result, scale, read_seconds, time.perf_counter() - start)
+    finished = time.perf_counter()
+    return PreparedFile(path, model, data, result, scale, read_end - started, finished - mesh_start, started, finished)
 
 
-def timing_line(prepared, objects_seconds):
-    """'NAME: 1.23 s (read 0.40 s, mesh 0.70 s, objects 0.13 s)': the import's time and its parts."""
-    parts = (prepared.read_seconds, prepared.mesh_seconds, objects_seconds)
-    return (f"{prepared.path.name}: {sum(parts):.2f} s (read {parts[0]:.2f} s, mesh {parts[1]:.2f} s, "
-            f"objects {parts[2]:.2f} s)")
+# Waits shorter than this are not listed in the timing (a function return, not a wait).
+LISTED_WAIT = 0.005
+
+
+def timing_line(prepared, link_start, link_end):
+    """'NAME: 1.23 s (read 0.40 s, mesh 0.70 s, objects 0.13 s)': the import's time, from the
+    start of its read to its last object, and its parts, each timed on its own; a modal
+    import's wait between the working thread's end and the main thread's next look at
+    it is listed as 'waiting' when it is not negligible."""
+    total = link_end - prepared.started
+    wait = link_start - prepared.finished
+    waiting = f", waiting {wait:.2f} s" if wait >= LISTED_WAIT else ""
+    return (f"{prepared.path.name}: {total:.2f} s (read {prepared.read_seconds:.2f} s, "
+            f"mesh {prepared.mesh_seconds:.2f} s{waiting}, objects {link_end - link_start:.2f} s)")
 
 
 def import_file(context, filepath, settings, progress=None, limits=None):
@@ -153,7 +165,7 @@ def link_file(context, prepared, settings, progress=None):
         if progress:
             progress((k + 1) / len(result.parts))
     select_only(context, objects)
-    timing = timing_line(prepared, time.perf_counter() - start)
+    timing = timing_line(prepared, start, time.perf_counter())
     for obj in objects:
         obj.trimkit.import_report = "\n".join([line] + warnings)
         obj.trimkit.import_timing = timing

@@ -77,6 +77,12 @@ def wait_finished():
         after = counts()
         if not after[0] > STATE["before"][0]:
             fail(f"no objects after the modal import: {STATE['before']} -> {after}")
+        timing = next(o.trimkit.import_timing for o in bpy.data.objects if o.type == 'MESH')
+        total = float(timing.split(": ")[1].split(" s ")[0])
+        parts = [float(p.split()[1]) for p in timing.split("(")[1].rstrip(")").split(", ")]
+        if abs(total - sum(parts)) > 0.015:
+            fail(f"the timing's parts do not sum to its total: {timing}")
+        print(f"modal: {timing}")
         print(f"modal: finished in {time.perf_counter() - STATE['t0']:.2f} s ({STATE['ticks']} timer ticks since "
               f"Blender started), objects {STATE['before'][0]} -> {after[0]}")
         STATE["before"] = after
