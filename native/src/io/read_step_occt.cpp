@@ -50,7 +50,7 @@ constexpr int kMaxAssemblyDepth = 64;
 // Part occurrences (placed instances) one file may make. Depth alone does not bound
 // them: assemblies that each hold the one below twice make 2^depth occurrences. The
 // largest shared assembly (as1-oc-214-mat.stp) has 18.
-constexpr std::size_t kMaxOccurrences = 1'000'000;
+constexpr std::size_t kMaxOccurrences = 200'000;
 
 std::string label_name(const TDF_Label& label) {
     Handle(TDataStd_Name) name;

@@ -320,6 +320,29 @@ void unify_edge_ends(const geom::Model& model, std::vector<std::vector<Eigen::Ve
     }
 }
 
+// Snaps open-boundary vertices within weld_tol, closes T-junctions, fills sliver holes
+// up to sliver_width. On a degenerate boundary (snap_boundary_vertices.h,
+// close_t_junctions.h: piled-up vertices, whose joining grows with the square of the
+// pile) the stage that meets it stops, the hole filling (a shortest-cycle search per
+// open side) is skipped, and a warning says so.
+void join_faces(mesh::Mesh& m, double weld_tol, double sliver_width, std::vector<std::string>& warnings) {
+    bool piled = false, crowded = false;
+    snap_boundary_vertices(m, weld_tol, &piled);
+    if (piled)
+        warnings.push_back("joining the faces: more than " + std::to_string(kMaxSnapPairsPerEnd) +
+                           " open-edge vertices per open-edge vertex lie within the weld tolerance (a degenerate "
+                           "boundary); the faces were not snapped together");
+    close_t_junctions(m, weld_tol, &crowded);
+    if (crowded)
+        warnings.push_back("joining the faces: more than " + std::to_string(kMaxJunctionTestsPerSide) +
+                           " boundary vertices per open edge lie near the open edges (a degenerate boundary); "
+                           "T-junctions were closed only in part");
+    if (piled || crowded)
+        warnings.push_back("joining the faces: sliver holes not filled (degenerate boundary)");
+    else
+        fill_sliver_holes(m, sliver_width, kSliverHoleSides);
+}
+
 FailedFace failed_face(int f, const FaceOutput& out) {
     FailedFace failed;
     failed.face = f;
@@ -642,14 +665,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     mesh::Mesh& m = result.mesh;
     if (m.vertex_count() > 0) {
         const double weld_tol = (shared.empty() ? 1.0 : kSharedEdgeWeldShare) * options.tolerance;
-        bool degenerate = false;
-        snap_boundary_vertices(m, weld_tol, &degenerate);
-        if (degenerate)
-            result.warnings.push_back("joining the faces: more than " + std::to_string(kMaxSnapPairsPerEnd) +
-                                      " open-edge vertices per open-edge vertex lie within the weld tolerance "
-                                      "(a degenerate boundary); the faces were not snapped together");
-        close_t_junctions(m, weld_tol);
-        fill_sliver_holes(m, least_scale * trim_tolerance(options), kSliverHoleSides);
+        join_faces(m, weld_tol, least_scale * trim_tolerance(options), result.warnings);
         flag_edges(m, options.angle);
         result.open_edges = count_position_open_edges(m);
     }
