@@ -413,7 +413,8 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
                                                "far off this face, and the mesh follows the edge)");
                     polylines.push_back(std::move(mapped.polyline));
                 } else {
-                    polylines.push_back(approximate_trim_curve(face.surface, coedge.curve, trim_tol, attempt.method));
+                    polylines.push_back(
+                        approximate_trim_curve(face.surface, coedge.curve, trim_tol, attempt.method, &deadline));
                     polylines.back().edge = e;
                     drop_duplicate_points(polylines.back(), kDuplicatePointShare * options.tolerance);
                 }
@@ -541,8 +542,11 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
             return;
         }
         try {
+            // Its own limit (each face has its own too): an edge over it is left to its faces,
+            // which then stop at theirs and report it.
+            mesh::Deadline deadline(options.face_timeout, options.cancel);
             TrimPolyline polyline = approximate_trim_curve(face.surface, coedge.curve, scale * trim_tolerance(options),
-                                                           options.trim_method);
+                                                           options.trim_method, &deadline);
             polyline.edge = e;
             edge_points[e] = edge_points_from(polyline, coedge.edge_reversed);
             edge_polyline[e] = std::move(polyline);
