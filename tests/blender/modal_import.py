@@ -1,13 +1,14 @@
 """The CAD import's modal path in a real Blender window (run under Xvfb by run.py's
 test_modal_import_finishes_and_a_cancelled_one_leaves_the_scene_unchanged):
 
-    xvfb-run -a -s "-screen 0 1280x800x24" blender --factory-startup -p 0 0 1280 800 FILE.blend \
+    xvfb-run -a -s "-screen 0 1280x800x24" blender --factory-startup --enable-event-simulate -p 0 0 1280 800 FILE.blend \
         --python tests/blender/modal_import.py -- --input as1-oc-214-mat.stp
 
 Starts the import as the file browser does (run_modal): it must return RUNNING_MODAL,
 read and mesh in its working thread, then make the objects from its modal handler.
 Then a second import is cancelled while reading with the flag Esc sets
-(modal_work.ACTIVE; no key presses are sent): it must end with the scene's counts
+(modal_work.ACTIVE, from the working thread), and a third by a simulated Esc key press
+(Blender started with --enable-event-simulate): both must end with the scene's counts
 unchanged. Prints "modal: ..." lines; exits 1 on any error.
 """
 import argparse
@@ -122,6 +123,32 @@ def wait_cancelled():
     stage, fraction, at = STATE["cancelled_at"]
     print(f"modal: cancelled at {stage} {fraction:.2f} after {at:.2f} s, ended "
           f"{time.perf_counter() - STATE['t0'] - at:.2f} s later; counts unchanged {after}")
+    press_escape()
+    return None
+
+
+def press_escape():
+    """A third import, cancelled by an Esc key press (Window.event_simulate; Blender runs
+    with --enable-event-simulate) sent right after it started: the modal handler sets the
+    flag, the reader stops, the scene's counts stay."""
+    STATE["before"] = counts()
+    STATE["t0"] = time.perf_counter()
+    start_import()
+    window = bpy.context.window_manager.windows[0]
+    window.event_simulate(type='ESC', value='PRESS')
+    window.event_simulate(type='ESC', value='RELEASE')
+    bpy.app.timers.register(wait_escaped, first_interval=0.05)
+
+
+def wait_escaped():
+    from trimkit import modal_work
+    if modal_work.ACTIVE:
+        return 0.05
+    after = counts()
+    if after != STATE["before"]:
+        fail(f"the import cancelled by Esc changed the scene: {STATE['before']} -> {after}")
+    print(f"modal: Esc pressed at once: ended after {time.perf_counter() - STATE['t0']:.2f} s; "
+          f"counts unchanged {after}")
     print("modal: done")
     sys.stdout.flush()
     os._exit(0)

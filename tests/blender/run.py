@@ -396,7 +396,8 @@ def test_modal_import_finishes_and_a_cancelled_one_leaves_the_scene_unchanged():
     start.parent.mkdir(parents=True, exist_ok=True)
     assert bpy.ops.wm.save_as_mainfile(filepath=str(start)) == {'FINISHED'}
     command = [xvfb, "-a", "-s", "-screen 0 1280x800x24", bpy.app.binary_path, "--factory-startup",
-               "-p", "0", "0", "1280", "800", str(start), "--python", str(ROOT / "tests" / "blender" / "modal_import.py"),
+               "--enable-event-simulate", "-p", "0", "0", "1280", "800", str(start),
+               "--python", str(ROOT / "tests" / "blender" / "modal_import.py"),
                "--", "--input", str(source)]
     run = subprocess.run(command, capture_output=True, text=True, timeout=300)
     lines = [l for l in run.stdout.splitlines() if l.startswith("modal:")]
