@@ -6,11 +6,14 @@
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
+#include <tuple>
+
 #include "io/model_summary.h"
 #include "io/read_iges.h"
 #include "io/read_model.h"
 #include "io/read_brep.h"
 #include "io/read_step.h"
+#include "io/write_glb.h"
 #include "io/write_mesh.h"
 #include "cancel_flag.h"
 #include "numpy_convert.h"
@@ -69,6 +72,23 @@ geom::Model read_model_bytes(const py::bytes& data, const std::string& name, dou
                      read_timeout, progress, cancel);
 }
 
+// GlbNodes from (mesh index, 4x4 matrix, name) tuples.
+std::vector<io::GlbNode> glb_nodes(const std::vector<std::tuple<int, DoubleArray, std::string>>& placements) {
+    std::vector<io::GlbNode> nodes;
+    for (const auto& [mesh, matrix, name] : placements) {
+        if (matrix.ndim() != 2 || matrix.shape(0) != 4 || matrix.shape(1) != 4)
+            throw py::value_error("write_glb_instances: each matrix must have shape (4, 4)");
+        io::GlbNode node;
+        node.mesh = mesh;
+        node.name = name;
+        const auto m = matrix.unchecked<2>();
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c) node.matrix(r, c) = m(r, c);
+        nodes.push_back(node);
+    }
+    return nodes;
+}
+
 }  // namespace
 
 void bind_io(py::module_& m) {
@@ -115,6 +135,16 @@ void bind_io(py::module_& m) {
     m.def("write_mesh", &io::write_mesh, py::arg("path"), py::arg("mesh"),
           py::call_guard<py::gil_scoped_release>(),
           "Write a Mesh as .obj, .ply, .stl or .glb (by extension).");
+    m.def(
+        "write_glb_instances",
+        [](const std::string& path, const std::vector<mesh::Mesh>& meshes,
+           const std::vector<std::tuple<int, DoubleArray, std::string>>& placements) {
+            const std::vector<io::GlbNode> nodes = glb_nodes(placements);
+            py::gil_scoped_release release;
+            io::write_glb(path, meshes, nodes);
+        },
+        py::arg("path"), py::arg("meshes"), py::arg("placements"),
+        "Write meshes once each to a .glb, placed by one node per (mesh index, 4x4 matrix, name).");
 
     py::class_<io::ModelSummary>(m, "ModelSummary")
         .def_readonly("file", &io::ModelSummary::file)

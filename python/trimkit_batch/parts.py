@@ -9,7 +9,9 @@ Three steps, each a task:
                          body's own coordinates; returns the mesh as arrays.
   write_assembly(...)    places each part's mesh at each of its placements and writes
                          one mesh, faces numbered as flatten_instances numbers them
-                         (what `trimkit mesh` meshes), so failed-face ids agree.
+                         (what `trimkit mesh` meshes), so failed-face ids agree; a .glb
+                         keeps the instancing (each part's mesh once, one node per
+                         placement with its matrix).
 
 A part placed with scale s is meshed at tolerance T / s (the largest s among its
 placements), so every placed copy stays within T. Departures from `trimkit mesh` on the
@@ -165,6 +167,32 @@ def assemble_mesh(plan, meshes):
         edge_flags=np.concatenate([p["edge_flags"] for p in pieces]).astype(np.uint8))
 
 
+def instanced_meshes(plan, meshes):
+    """A .glb's instancing: each part's mesh once, in its body's coordinates, and one
+    (part index, matrix, name) per placement, in flattened face order."""
+    part_meshes = [placed_mesh(m.arrays, np.eye(4), 0) for m in meshes]
+    copies = sorted((first, k, matrix) for k, part in enumerate(plan.parts)
+                    for matrix, first in zip(part.placements, part.first_faces))
+    count = {}
+    placements = []
+    for _, k, matrix in copies:
+        count[k] = count.get(k, 0) + 1
+        placements.append((k, np.asarray(matrix, np.float64), f"{plan.parts[k].name}.{count[k]}"))
+    return part_meshes, placements
+
+
+def placed_mesh(arrays, matrix, first_face):
+    """A native Mesh of one placed copy (placed_arrays)."""
+    p = placed_arrays(arrays, matrix, first_face)
+    n = len(p["positions"])
+    return _trimkit.Mesh(
+        np.asarray(p["positions"], np.float64), np.asarray(p["triangles"], np.int32),
+        normals=np.asarray(p["normals"], np.float64) if len(p["normals"]) == n else None,
+        uvs=np.asarray(p["uvs"], np.float64) if len(p["uvs"]) == n else None,
+        face_ids=np.asarray(p["face_ids"], np.int32), edges=np.asarray(p["edges"], np.int32),
+        edge_flags=np.asarray(p["edge_flags"], np.uint8))
+
+
 def write_assembly(job, settings, plan, meshes):
     """Writes the placed parts to job.output; the Outcome of the whole file (a failed one
     when a part failed, naming it)."""
@@ -174,7 +202,12 @@ def write_assembly(job, settings, plan, meshes):
             return failed(f"part {part.name!r}: {mesh.error}", time.perf_counter() - start)
     try:
         mesh = assemble_mesh(plan, meshes)
-        size = outputs.write_atomically(job.output, lambda path: _trimkit.write_mesh(path, mesh))
+        if str(job.output).endswith(".glb"):
+            part_meshes, placements = instanced_meshes(plan, meshes)
+            write = lambda path: _trimkit.write_glb_instances(path, part_meshes, placements)  # noqa: E731
+        else:
+            write = lambda path: _trimkit.write_mesh(path, mesh)  # noqa: E731
+        size = outputs.write_atomically(job.output, write)
     except (RuntimeError, ValueError, OSError) as err:
         return failed(err, time.perf_counter() - start)
     failed_faces = [failed_face(first + k, reason)

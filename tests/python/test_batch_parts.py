@@ -135,3 +135,62 @@ def test_shared_assemblies_are_placed_within_the_tolerance(tmp_path):
         print(f"{source.name}: {line['parts']} parts, {line['triangles']} triangles, deviation "
               f"{report.mesh_to_surface / tolerance:.3f} T / {report.surface_to_mesh / tolerance:.3f} T "
               f"(trimkit mesh: {reference['triangles']} triangles)")
+
+
+def read_glb(path):
+    """(JSON, BIN) chunks of a .glb file."""
+    import json
+    import struct
+    data = pathlib.Path(path).read_bytes()
+    magic, version, total = struct.unpack_from("<III", data, 0)
+    assert (magic, version, total) == (0x46546C67, 2, len(data))
+    length, kind = struct.unpack_from("<II", data, 12)
+    assert kind == 0x4E4F534A
+    document = json.loads(data[20:20 + length])
+    bin_length, _ = struct.unpack_from("<II", data, 20 + length)
+    return document, data[28 + length:28 + length + bin_length]
+
+
+def glb_positions(document, blob, mesh):
+    """POSITION array (n, 3) of the glTF mesh `mesh`'s first primitive."""
+    accessor = document["accessors"][document["meshes"][mesh]["primitives"][0]["attributes"]["POSITION"]]
+    view = document["bufferViews"][accessor["bufferView"]]
+    return np.frombuffer(blob, np.float32, 3 * accessor["count"], view["byteOffset"]).reshape(-1, 3)
+
+
+def test_glb_assembly_stores_each_part_once_and_places_it_by_nodes(tmp_path):
+    folder = tmp_path / "in"
+    folder.mkdir()
+    placements = [(0, 0, 0, 1), (200, 0, 0, 1), (0, 150, 30, 1)]
+    source = write_bracket_assembly(folder / "moved.igs", placements)
+    out = tmp_path / "out"
+    run = run_batch(folder, "--out", out, "--split", "parts", "--format", "glb", "--tolerance", TOLERANCE,
+                    "--workers", "1")
+    assert run.returncode == 0, run.stderr
+    [line] = read_manifest(out / "manifest.jsonl")
+    assert line["status"] == "ok" and line["parts"] == 1
+    document, blob = read_glb(out / "moved.glb")
+    # One mesh (the part, in its own coordinates), one node per placement with its matrix.
+    assert len(document["meshes"]) == 1 and len(document["nodes"]) == len(placements)
+    model = _trimkit.read_model(str(source))
+    part = _trimkit.tessellate_model(_trimkit.select_faces(model, list(model.bodies[0].faces)),
+                                     _trimkit.TessellationOptions(tolerance=TOLERANCE)).mesh
+    positions = glb_positions(document, blob, 0)
+    np.testing.assert_allclose(positions, np.asarray(part.positions), atol=FLOAT32_SLACK)
+    assert line["triangles"] == len(placements) * part.triangle_count
+    for node, instance in zip(document["nodes"], model.instances):
+        matrix = np.asarray(node.get("matrix", np.eye(4).ravel(order="F"))).reshape(4, 4, order="F")
+        np.testing.assert_allclose(matrix, np.asarray(instance.matrix), atol=1e-12)
+        assert node["mesh"] == 0 and node["name"].startswith(document["nodes"][0]["name"].rsplit(".", 1)[0])
+    # Placed by their nodes, the copies are where the flattened model's faces are.
+    flat = _trimkit.flatten_instances(model)
+    copies = []
+    for node in document["nodes"]:
+        matrix = np.asarray(node.get("matrix", np.eye(4).ravel(order="F"))).reshape(4, 4, order="F")
+        copies.append(positions.astype(np.float64) @ matrix[:3, :3].T + matrix[:3, 3])
+    triangles = np.concatenate([np.asarray(part.triangles) + k * len(positions) for k in range(len(copies))])
+    face_ids = np.concatenate([np.asarray(part.face_ids) + k * len(model.bodies[0].faces) for k in range(len(copies))])
+    report = _trimkit.measure_deviation(flat, _trimkit.Mesh(np.concatenate(copies), triangles.astype(np.int32),
+                                                            face_ids=face_ids.astype(np.int32)))
+    assert report.mesh_to_surface <= TOLERANCE + FLOAT32_SLACK
+    assert report.surface_to_mesh <= TOLERANCE + FLOAT32_SLACK

@@ -37,79 +37,73 @@ std::string float_list(const float* v, int n) {
     return text + "]";
 }
 
-}  // namespace
-
-void write_glb(const std::string& path, const mesh::Mesh& mesh) {
-    check_float_mesh(mesh, "write_glb");
+// Appends the mesh's attributes and indices to `bin` (one view each) and returns its
+// primitive's JSON object.
+std::string append_primitive(const mesh::Mesh& mesh, std::string& bin, std::vector<View>& views) {
     const std::size_t nv = mesh.vertex_count();
-    const std::size_t nt = mesh.triangle_count();
-
-    std::string bin;
-    std::vector<View> views;
-    std::string attributes;
-    std::string json = R"({"asset":{"version":"2.0","generator":"trimkit"},"scene":0,)";
-    if (nt == 0) {
-        json += R"("scenes":[{}]})";
-    } else {
-        bin.reserve(nv * 4 * (3 + (mesh.has_normals() ? 3 : 0) + (mesh.has_uvs() ? 2 : 0)) + nt * 12);
-        // POSITION: min/max of the float32 values actually stored (the spec requires them exact).
-        float lo[3], hi[3];
-        std::fill(lo, lo + 3, std::numeric_limits<float>::infinity());
-        std::fill(hi, hi + 3, -std::numeric_limits<float>::infinity());
-        std::size_t start = bin.size();
-        for (const auto& p : mesh.positions) {
-            for (int k = 0; k < 3; ++k) {
-                const auto x = static_cast<float>(p[k]);
-                lo[k] = std::min(lo[k], x);
-                hi[k] = std::max(hi[k], x);
-                put_f32(bin, x);
-            }
+    // POSITION: min/max of the float32 values actually stored (the spec requires them exact).
+    float lo[3], hi[3];
+    std::fill(lo, lo + 3, std::numeric_limits<float>::infinity());
+    std::fill(hi, hi + 3, -std::numeric_limits<float>::infinity());
+    std::size_t start = bin.size();
+    for (const auto& p : mesh.positions) {
+        for (int k = 0; k < 3; ++k) {
+            const auto x = static_cast<float>(p[k]);
+            lo[k] = std::min(lo[k], x);
+            hi[k] = std::max(hi[k], x);
+            put_f32(bin, x);
         }
-        views.push_back({start, bin.size() - start, kArrayBuffer, kFloat, nv, "VEC3",
-                         ",\"min\":" + float_list(lo, 3) + ",\"max\":" + float_list(hi, 3)});
-        attributes = "\"POSITION\":0";
-        if (mesh.has_normals()) {
-            start = bin.size();
-            for (const auto& n : mesh.normals)
-                for (int k = 0; k < 3; ++k) put_f32(bin, static_cast<float>(n[k]));
-            views.push_back({start, bin.size() - start, kArrayBuffer, kFloat, nv, "VEC3", ""});
-            attributes += ",\"NORMAL\":" + std::to_string(views.size() - 1);
-        }
-        if (mesh.has_uvs()) {
-            start = bin.size();
-            for (const auto& uv : mesh.uvs) {
-                put_f32(bin, static_cast<float>(uv.x()));
-                put_f32(bin, static_cast<float>(1.0 - uv.y()));  // glTF origin top left
-            }
-            views.push_back({start, bin.size() - start, kArrayBuffer, kFloat, nv, "VEC2", ""});
-            attributes += ",\"TEXCOORD_0\":" + std::to_string(views.size() - 1);
-        }
-        start = bin.size();
-        for (const auto& t : mesh.triangles)
-            for (std::int32_t v : t) put_u32(bin, static_cast<std::uint32_t>(v));
-        views.push_back({start, bin.size() - start, kElementArrayBuffer, kUnsignedInt, 3 * nt,
-                         "SCALAR", ""});
-        const std::size_t indices = views.size() - 1;
-
-        json += R"("scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{)" +
-                attributes + "},\"indices\":" + std::to_string(indices) +
-                ",\"mode\":" + std::to_string(kTriangles) + "}]}],";
-        json += "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}],";
-        std::string buffer_views = "\"bufferViews\":[", accessors = "\"accessors\":[";
-        for (std::size_t i = 0; i < views.size(); ++i) {
-            const View& v = views[i];
-            const char* sep = i > 0 ? "," : "";
-            buffer_views += sep + ("{\"buffer\":0,\"byteOffset\":" + std::to_string(v.offset) +
-                                   ",\"byteLength\":" + std::to_string(v.length) +
-                                   ",\"target\":" + std::to_string(v.target) + "}");
-            accessors += sep + ("{\"bufferView\":" + std::to_string(i) +
-                                ",\"componentType\":" + std::to_string(v.component_type) +
-                                ",\"count\":" + std::to_string(v.count) + ",\"type\":\"" + v.type +
-                                "\"" + v.min_max + "}");
-        }
-        json += buffer_views + "]," + accessors + "]}";
     }
+    views.push_back({start, bin.size() - start, kArrayBuffer, kFloat, nv, "VEC3",
+                     ",\"min\":" + float_list(lo, 3) + ",\"max\":" + float_list(hi, 3)});
+    std::string attributes = "\"POSITION\":" + std::to_string(views.size() - 1);
+    if (mesh.has_normals()) {
+        start = bin.size();
+        for (const auto& n : mesh.normals)
+            for (int k = 0; k < 3; ++k) put_f32(bin, static_cast<float>(n[k]));
+        views.push_back({start, bin.size() - start, kArrayBuffer, kFloat, nv, "VEC3", ""});
+        attributes += ",\"NORMAL\":" + std::to_string(views.size() - 1);
+    }
+    if (mesh.has_uvs()) {
+        start = bin.size();
+        for (const auto& uv : mesh.uvs) {
+            put_f32(bin, static_cast<float>(uv.x()));
+            put_f32(bin, static_cast<float>(1.0 - uv.y()));  // glTF origin top left
+        }
+        views.push_back({start, bin.size() - start, kArrayBuffer, kFloat, nv, "VEC2", ""});
+        attributes += ",\"TEXCOORD_0\":" + std::to_string(views.size() - 1);
+    }
+    start = bin.size();
+    for (const auto& t : mesh.triangles)
+        for (std::int32_t v : t) put_u32(bin, static_cast<std::uint32_t>(v));
+    views.push_back({start, bin.size() - start, kElementArrayBuffer, kUnsignedInt, 3 * mesh.triangle_count(),
+                     "SCALAR", ""});
+    return "{\"primitives\":[{\"attributes\":{" + attributes + "},\"indices\":" +
+           std::to_string(views.size() - 1) + ",\"mode\":" + std::to_string(kTriangles) + "}]}";
+}
 
+// A node's JSON: its mesh, its matrix (column-major, left out when the identity) and name.
+std::string node_json(int mesh, const GlbNode& node) {
+    std::string json = "{\"mesh\":" + std::to_string(mesh);
+    if (node.matrix != Eigen::Matrix4d::Identity()) {
+        json += ",\"matrix\":[";
+        for (int k = 0; k < 16; ++k) json += (k > 0 ? "," : "") + json_number(node.matrix(k % 4, k / 4));
+        json += "]";
+    }
+    if (!node.name.empty()) json += ",\"name\":" + json_string(node.name);
+    return json + "}";
+}
+
+void check_node(const GlbNode& node, std::size_t meshes) {
+    if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= meshes)
+        throw geom::InvalidInput("write_glb: node mesh " + std::to_string(node.mesh) + " out of range (" +
+                                 std::to_string(meshes) + " meshes)");
+    if (!node.matrix.allFinite() || node.matrix.row(3) != Eigen::RowVector4d(0, 0, 0, 1))
+        throw geom::InvalidInput("write_glb: a node's matrix is not finite and affine");
+}
+
+// The whole .glb file: header, JSON chunk and BIN chunk, padded to 4 bytes.
+std::string glb_bytes(std::string json, std::string bin) {
     // Chunks padded to 4 bytes: JSON with spaces, BIN with zeros (glTF spec Sec. 4.4.3).
     while (json.size() % 4 != 0) json += ' ';
     while (bin.size() % 4 != 0) bin += '\0';
@@ -130,8 +124,59 @@ void write_glb(const std::string& path, const mesh::Mesh& mesh) {
         put_u32(bytes, kChunkBin);
         bytes += bin;
     }
+    return bytes;
+}
+
+}  // namespace
+
+void write_glb(const std::string& path, const mesh::Mesh& mesh) {
+    write_glb(path, std::vector<mesh::Mesh>{mesh}, std::vector<GlbNode>{GlbNode{}});
+}
+
+void write_glb(const std::string& path, const std::vector<mesh::Mesh>& meshes, const std::vector<GlbNode>& nodes) {
+    for (const mesh::Mesh& mesh : meshes) check_float_mesh(mesh, "write_glb");
+    for (const GlbNode& node : nodes) check_node(node, meshes.size());
+    // Meshes with triangles get glTF mesh indices in order; nodes of the others go.
+    std::vector<int> gltf_mesh(meshes.size(), -1);
+    std::string bin, mesh_list, node_list, scene_nodes;
+    std::vector<View> views;
+    int count = 0;
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        if (meshes[m].triangle_count() == 0) continue;
+        mesh_list += (count > 0 ? "," : "") + append_primitive(meshes[m], bin, views);
+        gltf_mesh[m] = count++;
+    }
+    int placed = 0;
+    for (const GlbNode& node : nodes) {
+        if (gltf_mesh[node.mesh] < 0) continue;
+        node_list += (placed > 0 ? "," : "") + node_json(gltf_mesh[node.mesh], node);
+        scene_nodes += (placed > 0 ? "," : "") + std::to_string(placed);
+        ++placed;
+    }
+    std::string json = R"({"asset":{"version":"2.0","generator":"trimkit"},"scene":0,)";
+    if (placed == 0) {
+        json += R"("scenes":[{}]})";
+        bin.clear();
+    } else {
+        json += "\"scenes\":[{\"nodes\":[" + scene_nodes + "]}],\"nodes\":[" + node_list + "],\"meshes\":[" +
+                mesh_list + "],";
+        json += "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}],";
+        std::string buffer_views = "\"bufferViews\":[", accessors = "\"accessors\":[";
+        for (std::size_t i = 0; i < views.size(); ++i) {
+            const View& v = views[i];
+            const char* sep = i > 0 ? "," : "";
+            buffer_views += sep + ("{\"buffer\":0,\"byteOffset\":" + std::to_string(v.offset) +
+                                   ",\"byteLength\":" + std::to_string(v.length) +
+                                   ",\"target\":" + std::to_string(v.target) + "}");
+            accessors += sep + ("{\"bufferView\":" + std::to_string(i) +
+                                ",\"componentType\":" + std::to_string(v.component_type) +
+                                ",\"count\":" + std::to_string(v.count) + ",\"type\":\"" + v.type +
+                                "\"" + v.min_max + "}");
+        }
+        json += buffer_views + "]," + accessors + "]}";
+    }
     OutputFile out(path);
-    out.write(bytes);
+    out.write(glb_bytes(std::move(json), std::move(bin)));
     out.commit();
 }
 

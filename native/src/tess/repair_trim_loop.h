@@ -22,7 +22,7 @@ namespace trimkit::tess {
 // 5: a region whose interior reaches 0.05 T (min_width = 0.01 T) past its boundary
 // is no sliver; the boundary is measured on the surface (S at the piece's (u,v),
 // refined until its chords sag less than min_width / 2), so the trim chords'
-// own sag (up to 0.25 T) does not count as width.
+// own sag (up to the trim tolerance, T / 2) does not count as width.
 constexpr double kWideRegionFactor = 5.0;
 
 // What the repair changed, for the face's warnings.

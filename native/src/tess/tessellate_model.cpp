@@ -38,10 +38,9 @@ using Clock = std::chrono::steady_clock;
 // parameters, far below any trim segment the approximation makes).
 constexpr double kSnapUvRelative = 1e-9;
 // Models with shared edges meet exactly along edges and at their vertices (edge ends
-// are unified, unify_edge_ends), so their boundary snap only mops up what the file's
-// topology misses, within this share of the tolerance. Models without (loose trimmed
-// surfaces) snap within the tolerance.
-constexpr double kSharedEdgeWeldShare = 0.1;
+// are unified, unify_edge_ends), so their snap (within kWeldShare T) only mops up
+// what the file's topology misses; loose trimmed surfaces close the gaps between
+// their own trim polylines, each within its trim tolerance of its curve.
 // Consecutive trim points closer than this fraction of the tolerance (in 3D) are one
 // point: joints of coedges that meet up to rounding (1e-12 apart) would otherwise
 // leave zero-length boundary segments that no face on the other side matches.
@@ -481,9 +480,11 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
 // scales.cell[f] times their share of the tolerance (a shared edge's trims at the
 // smaller of its faces'); *areas gets each meshed face's area and the areas its
 // chords lose (zero for the others). `state`: the previous pass's (empty for the
-// first), replaced by this one's.
+// first), replaced by this one's. Faces are meshed to options.tolerance; joining
+// them moves vertices by at most `weld_distance`.
 TessellationResult tessellate_pass(const geom::Model& model, const TessellationOptions& options,
-                                   const FaceScales& scales, std::vector<FaceArea>* areas, PassState& state) {
+                                   double weld_distance, const FaceScales& scales,
+                                   std::vector<FaceArea>* areas, PassState& state) {
     PassState previous = std::move(state);  // its unchanged faces' outputs are moved on
     const bool has_previous = !previous.outputs.empty();
     state = PassState{scales, std::vector<double>(model.edges.size(), 0.0), {}, {}, {}, {}};
@@ -668,8 +669,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     start = Clock::now();
     mesh::Mesh& m = result.mesh;
     if (m.vertex_count() > 0) {
-        const double weld_tol = (shared.empty() ? 1.0 : kSharedEdgeWeldShare) * options.tolerance;
-        join_faces(m, weld_tol, least_scale * trim_tolerance(options), result.warnings);
+        join_faces(m, weld_distance, least_scale * trim_tolerance(options), result.warnings);
         flag_edges(m, options.angle);
         result.open_edges = count_position_open_edges(m);
     }
@@ -690,12 +690,15 @@ void add_seconds(TessellationTimings& total, const TessellationTimings& pass) {
 
 TessellationResult tessellate_model(const geom::Model& model, const TessellationOptions& options) {
     validate(options);
+    const double weld_distance = kWeldShare * options.tolerance;
+    TessellationOptions face_options = options;
+    face_options.tolerance = face_tolerance(options);
     const std::vector<std::vector<int>> groups = area_groups(model);
     const std::vector<double> ones(model.faces.size(), 1.0);
     FaceScales scale{ones, ones};
     std::vector<FaceArea> areas;
     PassState state;
-    TessellationResult result = tessellate_pass(model, options, scale, &areas, state);
+    TessellationResult result = tessellate_pass(model, face_options, weld_distance, scale, &areas, state);
 
     double worst = worst_loss_share(groups, areas);
     const double first_worst = worst;
@@ -707,7 +710,7 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
         if (over.empty()) break;
         for (int g : over) tightened[g] = 1;
         std::vector<FaceArea> finer_areas;
-        TessellationResult finer = tessellate_pass(model, options, next, &finer_areas, state);
+        TessellationResult finer = tessellate_pass(model, face_options, weld_distance, next, &finer_areas, state);
         add_seconds(result.seconds, finer.seconds);
         if (finer.failed_faces.size() > result.failed_faces.size()) break;
         // A polyline's points change in steps, so a round that loses no less keeps
@@ -730,6 +733,7 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
                                   " face(s) meshed again with finer trims and cells (now " +
                                   geom::format_value(100.0 * worst) + " %)");
     }
+    result.tolerance = options.tolerance;
     return result;
 }
 

@@ -18,9 +18,10 @@ enum class ErrorMode {
     kApproximate,  // the same bound with surface samples instead of control points
 };
 
-// Default TessellationOptions::face_timeout, seconds: the slowest sound face of the
-// shared CAD files takes well under a second; a hostile one (a trim loop crossing
-// itself 600 000 times, tests/fuzz/slow) would take minutes.
+// Default TessellationOptions::face_timeout, seconds: whole shared CAD files mesh in
+// about a second (Motor-c.brep 0.4 s on one thread); a hostile face (a star-shaped trim
+// loop crossing itself 720 000 times spends 14 s in its loop repair alone, bench/FUZZ.md)
+// grows with the square of its crossings.
 constexpr double kDefaultFaceTimeout = 30.0;
 
 struct TessellationOptions {
@@ -51,7 +52,14 @@ struct TessellationOptions {
 //    of their own crossings) (kd_subdivision; the offset bound is computed from the
 //    chords, so cells take what the trims leave), and <= interior_tolerance;
 //  - cells no trim meets (only vertices on S): bound <= interior_tolerance.
-constexpr double kTrimToleranceShare = 0.25;
+// tessellate_model meshes each face to (1 - kWeldShare) T with these shares and
+// joins the faces by moving boundary points by at most kWeldShare T.
+constexpr double kTrimToleranceShare = 0.5;
+// Joining the faces by position (snap_boundary_vertices, close_t_junctions) moves
+// mesh points by up to kWeldShare T, so that share is kept back from the faces, and
+// a point the join moves stays within T. (Snapping within T on top of meshes that
+// spend T put hammer.iges 1.29 T off at 0.016 of its diagonal.)
+constexpr double kWeldShare = 0.1;
 // Cells could take all that the trims leave (T away from the trims); they take this
 // share because the area a mesh loses against a curved surface grows with the chord
 // error (about e / 3R on a tube of radius R): with cells at 0.8 T bug22869_Spring's
@@ -63,6 +71,10 @@ constexpr double kInteriorToleranceShare = 0.8;
 // angle in [0, pi], threads >= 0 and face_timeout >= 0 (not NaN).
 void validate(const TessellationOptions& options);
 
+// The tolerance tessellate_model meshes each face to.
+inline double face_tolerance(const TessellationOptions& options) {
+    return (1.0 - kWeldShare) * options.tolerance;
+}
 // The tolerance approximate_trim_curve gets.
 inline double trim_tolerance(const TessellationOptions& options) {
     return kTrimToleranceShare * options.tolerance;

@@ -37,7 +37,7 @@ namespace {
 // test sees holes wider than ~2T, the boundary test the rest.
 //
 // Boundary. The mesh's boundary follows the trim polylines, within the trim
-// tolerance (0.25 T) of the curves; a unified edge end may move by T and a shared
+// tolerance (T / 2) of the curves; a unified edge end may move by T and a shared
 // edge sits g off: a curve point lies within T + g of the mesh boundary, and every
 // boundary vertex within T + g of a curve, plus rounding.
 //
@@ -76,7 +76,7 @@ constexpr int kSpanIntervals = 2, kMinCoedgeIntervals = 8;
 // An interval is halved while S(c(t)) at its middle lies more than this share of T
 // from its chord, at most kMaxHalvings times (1024 pieces of a starting interval),
 // so the sampled polyline is within ~0.2 T of the curve: a boundary vertex on the
-// trim polyline (0.25 T from the curve) measures at most ~0.45 T from it.
+// trim polyline (T / 2 from the curve) measures at most ~0.7 T from it.
 constexpr double kChordShare = 0.2;
 constexpr int kMaxHalvings = 10;
 // A coedge never gets more samples than this.

@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
+#include "geom/error.h"
 #include "io/write_test_support.h"
 #include "mesh/sample_meshes.h"
 
@@ -233,6 +235,62 @@ TEST(WriteGlb, EmptyMeshGivesEmptyScene) {
     EXPECT_EQ(glb.json["asset"]["version"].text, "2.0");
     EXPECT_FALSE(glb.json.has("meshes"));
     EXPECT_TRUE(glb.bin.empty());
+}
+
+// An assembly: two meshes stored once each and placed by three nodes; the empty third
+// mesh's node is left out, matrices are written column-major and left out when the identity.
+TEST(WriteGlb, InstancesStoreEachMeshOncePlacedByNodes) {
+    const mesh::Mesh cube = test::cube_mesh(1.0, Eigen::Vector3d::Zero());
+    const mesh::Mesh square = test::square_mesh();
+    Eigen::Matrix4d moved = Eigen::Matrix4d::Identity();
+    moved.block<3, 1>(0, 3) = Eigen::Vector3d(10, 20, 30);
+    Eigen::Matrix4d turned = Eigen::Matrix4d::Identity();
+    turned.block<2, 2>(0, 0) << 0, -1, 1, 0;  // a quarter turn about z
+    const std::vector<GlbNode> nodes{{0, Eigen::Matrix4d::Identity(), "cube.1"}, {0, moved, "cube.2"},
+                                     {2, moved, "nothing"}, {1, turned, ""}};
+    const std::string path = test::temp_output(".glb");
+    write_glb(path, {cube, square, mesh::Mesh{}}, nodes);
+    const Glb glb = read_glb(path);
+    const Json& j = glb.json;
+    ASSERT_EQ(j["meshes"].items.size(), 2u);
+    ASSERT_EQ(j["nodes"].items.size(), 3u);
+    ASSERT_EQ(j["scenes"][0]["nodes"].items.size(), 3u);
+    EXPECT_EQ(j["nodes"][0]["mesh"].number, 0);
+    EXPECT_FALSE(j["nodes"][0].has("matrix"));
+    EXPECT_EQ(j["nodes"][0]["name"].text, "cube.1");
+    EXPECT_EQ(j["nodes"][1]["mesh"].number, 0);
+    for (int k = 0; k < 16; ++k) EXPECT_EQ(j["nodes"][1]["matrix"][k].number, moved(k % 4, k / 4)) << k;
+    EXPECT_EQ(j["nodes"][1]["matrix"][12].number, 10);  // translation in the last column
+    EXPECT_EQ(j["nodes"][2]["mesh"].number, 1);
+    EXPECT_FALSE(j["nodes"][2].has("name"));
+    EXPECT_EQ(j["nodes"][2]["matrix"][1].number, 1);  // column 0 = (0, 1, 0, 0)
+    // The square's positions are its own, after the cube's in the buffer.
+    const Json& position = j["accessors"][j["meshes"][1]["primitives"][0]["attributes"]["POSITION"].as_size()];
+    EXPECT_EQ(position["count"].as_size(), square.vertex_count());
+    for (std::size_t i = 0; i < square.vertex_count(); ++i)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(accessor_float(glb, position, i, k, 3), static_cast<float>(square.positions[i][k]));
+}
+
+TEST(WriteGlb, SingleMeshIsOneNodeWithoutMatrix) {
+    const mesh::Mesh cube = test::cube_mesh(1.0, Eigen::Vector3d::Zero());
+    const std::string one = test::temp_output(".glb"), placed = test::temp_output(".glb");
+    write_glb(one, cube);
+    write_glb(placed, {cube}, {GlbNode{}});
+    EXPECT_EQ(test::read_bytes(one), test::read_bytes(placed));
+    EXPECT_EQ(read_glb(one).json["nodes"].items.size(), 1u);
+}
+
+TEST(WriteGlb, BadNodesAreInvalidInput) {
+    const mesh::Mesh cube = test::cube_mesh(1.0, Eigen::Vector3d::Zero());
+    const std::string path = test::temp_output(".glb");
+    EXPECT_THROW(write_glb(path, {cube}, {GlbNode{1}}), geom::InvalidInput);
+    GlbNode projective;
+    projective.matrix(3, 0) = 1.0;
+    EXPECT_THROW(write_glb(path, {cube}, {projective}), geom::InvalidInput);
+    GlbNode not_finite;
+    not_finite.matrix(0, 3) = NAN;
+    EXPECT_THROW(write_glb(path, {cube}, {not_finite}), geom::InvalidInput);
 }
 
 }  // namespace

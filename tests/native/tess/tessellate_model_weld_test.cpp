@@ -3,9 +3,13 @@
 // count, a plate thinner than the tolerance keeps all its faces (bug33327.igs), and
 // meshes of files whose check measured wrongly (projection stuck at a seam, at a C0
 // crease, or started from another face's uv) are within the tolerance.
+// Joining moves points by 0.1 T at most, and loose models stay within T at coarse
+// tolerances.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <set>
 #include <tuple>
@@ -13,6 +17,7 @@
 #include "geom/model.h"
 #include "io/read_model.h"
 #include "geom/flatten_instances.h"
+#include "geom/face.h"
 #include "geom/select_faces.h"
 #include "mesh/open_edges.h"
 #include "tess/measure_deviation.h"
@@ -194,6 +199,68 @@ TEST_P(ClosedAfterWeld, NoOpenEdges) {
 
 INSTANTIATE_TEST_SUITE_P(Issue3, ClosedAfterWeld,
                          ::testing::Values("occ22470.igs", "OCC8842_cone_CATIA.igs", "OCC17026-1.igs", "hammer.iges"));
+
+// Two loose unit squares (no edges) side by side, the second `gap` above the first:
+// z = 0 on [0,1]x[0,1] and z = gap on [1,2]x[0,1], each bounded by its natural loop.
+geom::Model loose_squares(double gap) {
+    geom::Model model;
+    for (int k = 0; k < 2; ++k) {
+        const double x0 = k, z = k * gap;
+        geom::Face face;
+        face.surface = geom::NurbsSurface(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, 2, 2,
+                                          {{x0, 0, z}, {x0, 1, z}, {x0 + 1, 0, z}, {x0 + 1, 1, z}});
+        face.loops.push_back(geom::natural_boundary_loop(face.surface));
+        model.faces.push_back(face);
+    }
+    return model;
+}
+
+// Largest distance of a face's mesh vertices from its plane z = face * gap.
+double largest_vertex_move(const mesh::Mesh& m, double gap) {
+    double largest = 0.0;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+        for (std::int32_t v : m.triangles[t])
+            largest = std::max(largest, std::abs(m.positions[v].z() - m.face_ids[t] * gap));
+    return largest;
+}
+
+// Joining faces moves their points by at most 0.1 T, and the faces are meshed to
+// 0.9 T, so the joined mesh stays within T: a gap of 0.05 T is closed, one of 0.5 T
+// (which a snap within T used to close, moving vertices 0.5 T off their faces on
+// top of meshes that spent T: hammer.iges 1.29 T) is left open.
+TEST(TessellateModelWeld, JoinMovesPointsByATenthOfTheToleranceAtMost) {
+    TessellationOptions options;
+    options.tolerance = 0.1;
+    options.threads = 1;
+    const TessellationResult closed = tessellate_model(loose_squares(0.05 * options.tolerance), options);
+    const TessellationResult open = tessellate_model(loose_squares(0.5 * options.tolerance), options);
+    ASSERT_EQ(closed.faces_meshed, 2);
+    ASSERT_EQ(open.faces_meshed, 2);
+    // The squares' outer boundary has at least 6 sides; the middle one at least 2.
+    EXPECT_LT(closed.open_edges, open.open_edges);
+    EXPECT_GT(largest_vertex_move(closed.mesh, 0.05 * options.tolerance), 0.0);
+    EXPECT_LE(largest_vertex_move(closed.mesh, 0.05 * options.tolerance), 0.05 * options.tolerance + 1e-15);
+    EXPECT_EQ(largest_vertex_move(open.mesh, 0.5 * options.tolerance), 0.0);
+}
+
+// hammer.iges (loose trimmed surfaces) at coarse tolerances, where the faces' own
+// trim polylines lie far apart: every point within T of its face both ways, as
+// `trimkit check` measures (1.57 T at 0.064 and 1.29 T at 0.016 with the snap within T).
+class CoarseLooseModel : public ::testing::TestWithParam<double> {};
+
+TEST_P(CoarseLooseModel, StaysWithinTheTolerance) {
+    TRIMKIT_CAD_SAMPLE(path, "iges/hammer.iges");
+    const geom::Model model = io::read_model(path);
+    TessellationOptions options;
+    options.tolerance = GetParam() * model_diagonal(model);
+    const TessellationResult r = tessellate_model(model, options);
+    EXPECT_TRUE(r.failed_faces.empty());
+    const DeviationReport d = measure_deviation(model, r.mesh);
+    EXPECT_LE(d.mesh_to_surface.max, options.tolerance);
+    EXPECT_LE(d.surface_to_mesh.max, options.tolerance);
+}
+
+INSTANTIATE_TEST_SUITE_P(Hammer, CoarseLooseModel, ::testing::Values(0.064, 0.016));
 
 // bug33327.igs places one definition 4 times: a relative tolerance is a fraction of
 // the whole assembly, as the command line (which flattens) sees it.

@@ -73,7 +73,7 @@ TEST(TrimAreaLoss, ModelWhoseChordsLoseAreaIsMeshedWithFinerTrims) {
     // off it): 4k/3 lost, 0.67 % of the area, within the 16x finer trims' reach.
     const double k = 0.01;
     TessellationOptions options;
-    options.tolerance = 0.4;
+    options.tolerance = 0.1 / (kTrimToleranceShare * (1.0 - kWeldShare));
     options.threads = 1;
     const TessellationResult r = tessellate_model(bowed_face(k), options);
     ASSERT_TRUE(r.failed_faces.empty());
