@@ -13,7 +13,7 @@ import zlib
 
 import numpy as np
 
-from . import uv_layout
+from . import limits as limits_module, uv_layout
 from .uv_layout import normalize_uvs
 
 _native = None
@@ -75,10 +75,11 @@ def has_step():
         return False
 
 
-def read_source(path):
-    """(model, source bytes) of a CAD file; RuntimeError/ValueError for a bad file."""
+def read_source(path, limits=None):
+    """(model, source bytes) of a CAD file; RuntimeError/ValueError for a bad file.
+    limits: a limits.Limits (read timeout, progress, cancel: limits.Cancelled)."""
     data = pathlib.Path(path).read_bytes()
-    return read_bytes(data, pathlib.Path(path).name), data
+    return read_bytes(data, pathlib.Path(path).name, limits), data
 
 
 STEP_SUFFIXES = (".stp", ".step")
@@ -86,19 +87,22 @@ BREP_SUFFIXES = (".brep", ".brp")
 OCCT_SUFFIXES = STEP_SUFFIXES + BREP_SUFFIXES
 
 
-def read_bytes(data, name):
+def read_bytes(data, name, limits=None):
     """Model from a CAD file's bytes, the reader chosen by what the bytes are
     (file_format), else by `name`'s extension: IGES is parsed in memory, STEP and
     .brep through a temporary copy (Open CASCADE reads files). ValueError naming the
     file and what it is for anything trimkit does not read as CAD."""
     kind = file_format(data, name)
     if kind in ("step", "brep"):
-        return read_step_bytes(data, name, kind)
+        return read_step_bytes(data, name, kind, limits)
     if kind == "tkz":  # trimkit compress's output: the compressed faces rebuilt (Muraki)
         return native().extend_model(native().read_tkz_bytes(bytes(data), name))
     if kind != "iges":
         raise ValueError(unsupported_message(name, kind))
-    return native().read_model_bytes(data, name)
+    try:
+        return native().read_model_bytes(data, name, **limits_module.read_arguments(limits))
+    except native().ReadStopped as err:
+        raise limits_module.cancelled_error(err, limits, name) or err from None
 
 
 def compress_to_tkz(model, tolerance=0.0):
@@ -195,7 +199,7 @@ def unsupported_message(name, kind):
     return message + (f"; open it with {where}" if where else "")
 
 
-def read_step_bytes(data, name, kind=None):
+def read_step_bytes(data, name, kind=None, limits=None):
     if not has_step():
         raise RuntimeError(f"{name}: this trimkit module cannot read STEP or .brep (built without Open CASCADE)")
     kind = kind or ("brep" if pathlib.Path(name).suffix.lower() in BREP_SUFFIXES else "step")
@@ -203,9 +207,13 @@ def read_step_bytes(data, name, kind=None):
         path = pathlib.Path(folder) / (pathlib.Path(name).stem + (".brep" if kind == "brep" else ".stp"))
         path.write_bytes(data)
         try:
-            if kind == "brep":
-                return native().read_brep(str(path))
-            return native().read_step(str(path))
+            reader = native().read_brep if kind == "brep" else native().read_step
+            return reader(str(path), **limits_module.read_arguments(limits))
+        except native().ReadStopped as err:
+            cancelled = limits_module.cancelled_error(err, limits, name)
+            if cancelled:
+                raise cancelled from None
+            raise RuntimeError(str(err).replace(str(path), name).replace(path.name, name)) from None
         except RuntimeError as err:  # name the file, not its temporary copy
             raise RuntimeError(str(err).replace(str(path), name).replace(path.name, name)) from None
 
@@ -230,7 +238,7 @@ def absolute_tolerance(model, tolerance, relative):
 
 def tessellate(model, tolerance, *, relative=False, angle=np.radians(30.0), mode="guaranteed",
                trim_method="bezier3d", scale=1.0, split="BODY", parts=None, stem="Model",
-               uv_mode=uv_layout.REAL, metres=None, uv_layouts=None):
+               uv_mode=uv_layout.REAL, metres=None, uv_layouts=None, limits=None):
     """Meshes `model` and splits the mesh into parts.
 
     split: "BODY" (one part per body, faces in no body together), "FACE" (one
@@ -240,13 +248,20 @@ def tessellate(model, tolerance, *, relative=False, angle=np.radians(30.0), mode
     for bad options. uv_mode: uv_layout.REAL (1 UV unit per metre, `metres` per model
     unit, default model.scale_to_metres; each part packed, or placed by
     uv_layouts[(kind, index)] where given) or uv_layout.FACE (each face 0-1).
+    limits: a limits.Limits (face timeout, progress "mesh", cancel: limits.Cancelled).
     """
     start = time.perf_counter()
     split = "BODY" if model.instances else split
     options = native().TessellationOptions(
         tolerance=absolute_tolerance(model, tolerance, relative), angle=angle,
         mode=mode, trim_method=trim_method)
-    result = native().tessellate_model(model, options)
+    limits_module.apply(options, limits)
+    try:
+        result = native().tessellate_model(model, options)
+    except native().TessellationCancelled:
+        raise limits_module.Cancelled(f"{stem}: cancelled") from None
+    if limits is not None:
+        limits.check()
     mesh = result.mesh
     corner_uvs, corner_normals = native().corner_attributes(model, mesh)
     arrays = dict(positions=mesh.positions * scale, triangles=mesh.triangles,

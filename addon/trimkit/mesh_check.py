@@ -11,6 +11,7 @@ face's larger deviation, scene units) and a corner colour attribute `trimkit_che
 (green: passes; red: deviation beyond T; orange: area off), a one-line summary and
 the failed faces with their reasons (Object.trimkit.check_report, check_failed)."""
 import dataclasses
+import time
 
 import bpy
 import numpy as np
@@ -66,11 +67,14 @@ class FaceCheck:
         return not self.reason
 
 
-def check_object(obj):
+def check_object(obj, seconds=None):
     """Measures obj's mesh against its stored faces, writes the attributes and the
-    results on obj.trimkit. Returns (report, tolerance in model units, [FaceCheck])."""
+    results on obj.trimkit. Returns (report, tolerance in model units, [FaceCheck]).
+    seconds: a dict whose "read" (the stored file) and "check" entries the times are added to."""
+    start = time.perf_counter()
     props = obj.trimkit
     model = io.read_bytes(stored_source.load(props.source), stored_source.file_name(props.source))
+    read_seconds = time.perf_counter() - start
     me = obj.data
     positions, triangles, polygons = mesh_arrays(me)
     cad_face = polygon_faces(me)
@@ -98,6 +102,9 @@ def check_object(obj):
     bad = [c for c in checks if not c.passed]
     props.check_report = summary(report, tolerance, len(checks), len(bad))
     props.check_failed = "\n".join(c.reason for c in bad)[:4000]
+    if seconds is not None:
+        seconds["read"] = seconds.get("read", 0.0) + read_seconds
+        seconds["check"] = seconds.get("check", 0.0) + time.perf_counter() - start - read_seconds
     return report, tolerance, checks
 
 

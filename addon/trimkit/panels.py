@@ -23,6 +23,8 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
             return
         layout.label(text=f"{props.source_name} ({props.part.lower()} {props.part_index})", icon='FILE')
         draw_import_report(layout, props.import_report)
+        if props.import_timing:
+            layout.label(text=props.import_timing.partition(": ")[2], icon='TIME')
         col = layout.column()
         col.prop(props, "relative")
         col.prop(props, "relative_tolerance" if props.relative else "tolerance", text="Viewport")

@@ -98,6 +98,8 @@ class TRIMKIT_PG_object(bpy.types.PropertyGroup):
     lod_source: StringProperty(name="LOD Of", description="The object an LOD chain was made from")
     lod_report: StringProperty(name="LODs", description="Triangles and tolerance of each level made from this object")
     import_report: StringProperty(name="Import", description="File unit, size and warnings at import")
+    import_timing: StringProperty(name="Import Time",
+                                  description="Time of the import and its parts: read, mesh, objects")
 
     faces: IntProperty(name="Faces", description="CAD faces in this object")
     triangles: IntProperty(name="Triangles")

@@ -21,6 +21,8 @@ class ImportSettings:
     smooth: bool = True
     exact_normals: bool = True        # custom split normals from the exact surface
     uv_mode: str = "REAL"             # properties.UV_ITEMS
+    read_timeout: float = 120.0       # seconds for reading a file (0: no limit); _trimkit.DEFAULT_READ_TIMEOUT
+    face_timeout: float = 30.0        # seconds per CAD face (0: no limit); a slower face fails ("timeout")
 
 
 DEFAULTS = ImportSettings()

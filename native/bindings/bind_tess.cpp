@@ -1,6 +1,8 @@
 // Bindings for native/src/tess: options, tessellate_model (GIL released) and its
 // result. Enumerations cross as strings: mode "guaranteed" | "approximate",
 // trim_method "bezier3d" | "yang" | "param".
+#include <memory>
+
 #include <pybind11/stl.h>
 
 #include "geom/error.h"
@@ -8,6 +10,7 @@
 #include "tess/corner_attributes.h"
 #include "tess/measure_deviation.h"
 #include "tess/tessellate_model.h"
+#include "cancel_flag.h"
 #include "numpy_convert.h"
 
 namespace trimkit::bindings {
@@ -41,14 +44,31 @@ tess::TrimMethod method_from_name(const std::string& name) {
 }
 
 tess::TessellationOptions make_options(double tolerance, double angle, const std::string& mode,
-                                       const std::string& trim_method, int threads) {
+                                       const std::string& trim_method, int threads, double face_timeout) {
     tess::TessellationOptions options;
     options.tolerance = tolerance;
     options.angle = angle;
     options.mode = mode_from_name(mode);
     options.trim_method = method_from_name(trim_method);
     options.threads = threads;
+    options.face_timeout = face_timeout;
     return options;
+}
+
+// A Python callable (or None) as TessellationOptions::progress. Copies share the
+// callable (no GIL needed to copy them in worker threads); each call takes the GIL;
+// an exception from the callable is printed as unraisable and the tessellation goes on.
+std::function<void(double)> progress_function(const py::object& callable) {
+    if (callable.is_none()) return {};
+    const auto held = std::make_shared<py::object>(callable);
+    return [held](double fraction) {
+        py::gil_scoped_acquire gil;
+        try {
+            (*held)(fraction);
+        } catch (py::error_already_set& e) {
+            e.discard_as_unraisable("trimkit tessellation progress callback");
+        }
+    };
 }
 
 // measure_deviation over `faces` of the model only (all when empty): the mesh's face
@@ -92,7 +112,8 @@ void bind_tess(py::module_& m) {
                                           "angle in radians. Checked by tessellate_model (ValueError).")
         .def(py::init(&make_options), py::arg("tolerance") = defaults.tolerance,
              py::arg("angle") = defaults.angle, py::arg("mode") = mode_name(defaults.mode),
-             py::arg("trim_method") = method_name(defaults.trim_method), py::arg("threads") = defaults.threads)
+             py::arg("trim_method") = method_name(defaults.trim_method), py::arg("threads") = defaults.threads,
+             py::arg("face_timeout") = defaults.face_timeout)
         .def_readwrite("tolerance", &tess::TessellationOptions::tolerance)
         .def_readwrite("angle", &tess::TessellationOptions::angle)
         .def_property(
@@ -101,20 +122,35 @@ void bind_tess(py::module_& m) {
         .def_property(
             "trim_method", [](const tess::TessellationOptions& o) { return method_name(o.trim_method); },
             [](tess::TessellationOptions& o, const std::string& s) { o.trim_method = method_from_name(s); })
-        .def_readwrite("threads", &tess::TessellationOptions::threads);
+        .def_readwrite("threads", &tess::TessellationOptions::threads)
+        .def_readwrite("face_timeout", &tess::TessellationOptions::face_timeout,
+                       "seconds one face may take; a face that takes longer fails with defect 'timeout' "
+                       "(0 = no limit)")
+        .def_property(
+            "cancel", [](const tess::TessellationOptions&) { return py::none(); },
+            py::cpp_function(
+                [](tess::TessellationOptions& o, CancelFlag* flag) { o.cancel = flag ? &flag->value : nullptr; },
+                py::keep_alive<1, 2>()),
+            "a CancelFlag (write-only): once set, tessellate_model stops and raises TessellationCancelled")
+        .def_property(
+            "progress", [](const tess::TessellationOptions&) { return py::none(); },
+            [](tess::TessellationOptions& o, const py::object& f) { o.progress = progress_function(f); },
+            "callable(fraction of faces meshed) or None (write-only); called with the GIL from worker threads");
 
     py::class_<tess::FailedFace>(m, "FailedFace",
                                  "A face left out of the mesh; figures NaN unless its mesh was made and rejected.")
         .def_readonly("face", &tess::FailedFace::face)
         .def_readonly("reason", &tess::FailedFace::reason)
         .def_readonly("defect", &tess::FailedFace::defect,
-                      "'area', 'trim_loop', 'boundary', 'no_boundary' (the check that failed) or 'error'")
+                      "'area', 'trim_loop', 'boundary', 'no_boundary' (the check that failed), "
+                      "'timeout' (stopped by face_timeout) or 'error'")
         .def_readonly("area_mesh", &tess::FailedFace::area_mesh)
         .def_readonly("area_exact", &tess::FailedFace::area_exact)
         .def_readonly("area_bound", &tess::FailedFace::area_bound, "allowed |area_mesh - area_exact|")
         .def_readonly("boundary_gap", &tess::FailedFace::boundary_gap,
                       "largest distance between the trim loops' 3D curves and the mesh boundary")
-        .def_readonly("boundary_bound", &tess::FailedFace::boundary_bound);
+        .def_readonly("boundary_bound", &tess::FailedFace::boundary_bound)
+        .def_readonly("seconds", &tess::FailedFace::seconds, "wall time spent on the face (all its attempts)");
 
     py::class_<tess::TessellationTimings>(m, "TessellationTimings")
         .def_readonly("trim", &tess::TessellationTimings::trim)

@@ -2,6 +2,7 @@
 #include <pybind11/pybind11.h>
 
 #include "geom/error.h"
+#include "tess/tessellate_model.h"
 
 namespace py = pybind11;
 
@@ -20,6 +21,7 @@ PYBIND11_MODULE(_trimkit, m) {
     // ReadError and NumericalFailure become subclasses of RuntimeError.
     py::register_exception<trimkit::geom::ReadError>(m, "ReadError", PyExc_RuntimeError);
     py::register_exception<trimkit::geom::NumericalFailure>(m, "NumericalFailure", PyExc_RuntimeError);
+    py::register_exception<trimkit::tess::TessellationCancelled>(m, "TessellationCancelled", PyExc_RuntimeError);
     trimkit::bindings::bind_geom(m);
     trimkit::bindings::bind_mesh(m);
     trimkit::bindings::bind_tess(m);

@@ -14,12 +14,13 @@
 #include "io/read_mesh.h"
 #include "geom/flatten_instances.h"
 #include "io/read_model.h"
+#include "read_options.h"
 #include "tess/measure_deviation.h"
 
 namespace trimkit::cli {
 namespace {
 
-const char* const kCheckUsage = "trimkit check MODEL MESH [--json] [--samples N] [--threads N] | trimkit check MODEL_A MODEL_B";
+const char* const kCheckUsage = "trimkit check MODEL MESH [--json] [--samples N] [--threads N] [--read-timeout SECONDS] | trimkit check MODEL_A MODEL_B";
 
 int count_option(const Arguments& args, const std::string& name, int fallback, int minimum) {
     const double x = args.number(name, fallback);
@@ -120,14 +121,14 @@ int check_models(const std::string& a_path, const std::string& b_path) {
 }  // namespace
 
 int run_check(const std::vector<std::string>& argv) {
-    const Arguments args(argv, {"--json"}, {"--samples", "--threads"});
+    const Arguments args(argv, {"--json"}, {"--samples", "--threads", "--read-timeout"});
     args.expect_positionals(2, kCheckUsage);
     if (is_model_path(args.positionals()[1])) return check_models(args.positionals()[0], args.positionals()[1]);
     tess::DeviationOptions options;
     options.samples = count_option(args, "--samples", options.samples, 1);
     options.threads = count_option(args, "--threads", options.threads, 0);
     const auto start = std::chrono::steady_clock::now();
-    const geom::Model model = geom::flatten_instances(io::read_model(args.positionals()[0]));
+    const geom::Model model = geom::flatten_instances(io::read_model(args.positionals()[0], read_options(args)));
     const mesh::Mesh mesh = io::read_mesh(args.positionals()[1]);
     const tess::DeviationReport report = tess::measure_deviation(model, mesh, options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

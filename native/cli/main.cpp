@@ -11,18 +11,23 @@
 #include "arguments.h"
 #include "commands.h"
 #include "geom/error.h"
+#include "io/read_options.h"
 
 namespace {
 
 const char* const kUsage =
     "usage: trimkit COMMAND [ARGS]\n"
     "commands:\n"
-    "  info MODEL [--json]    summary of an IGES, STEP or .brep model: units, faces, surfaces, loops, edges\n"
+    "  info MODEL [--json] [--read-timeout S]\n"
+    "                         summary of an IGES, STEP or .brep model: units, faces, surfaces, loops, edges\n"
     "  mesh MODEL -o OUT --tolerance T [--relative] [--angle DEG] [--mode guaranteed|approximate]\n"
-    "       [--trim-method bezier3d|yang|param] [--threads N] [--json] [--strict]\n"
+    "       [--trim-method bezier3d|yang|param] [--threads N] [--face-timeout S] [--read-timeout S]\n"
+    "       [--json] [--strict]\n"
     "                         tessellate to .obj .ply .stl .glb within T (model units);\n"
-    "                         --strict: exit 3 if a face failed its check (one stderr line each)\n"
-    "  check MODEL MESH [--json] [--samples N] [--threads N]\n"
+    "                         --strict: exit 3 if a face failed its check (one stderr line each);\n"
+    "                         --face-timeout: seconds per face (default 30, 0 = none), a slower face fails;\n"
+    "                         --read-timeout: seconds for reading MODEL (default 120, 0 = none), exit 2\n"
+    "  check MODEL MESH [--json] [--samples N] [--threads N] [--read-timeout S]\n"
     "                         two-sided deviation of MESH from MODEL's faces, area ratio, open edges\n"
     "  check MODEL_A MODEL_B  two-sided surface deviation per face between two models (.igs .stp .brep .tkz)\n"
     "  compress MODEL -o OUT.tkz [--tolerance T]\n"
@@ -63,6 +68,13 @@ int main(int argc, char** argv) {
         return command->second(std::vector<std::string>(argv + 2, argv + argc));
     } catch (const trimkit::cli::UsageError& e) {
         return fail(2, e.what());
+    } catch (const trimkit::io::ReadStopped& e) {
+        // "FILE: reading stopped after N s (--read-timeout)": the option that sets the limit.
+        std::string what = e.what();
+        const std::string library = "(read timeout)";
+        const size_t at = what.rfind(library);
+        if (at != std::string::npos) what.replace(at, library.size(), "(--read-timeout)");
+        return fail(2, what);
     } catch (const trimkit::geom::ReadError& e) {
         return fail(2, e.what());
     } catch (const trimkit::geom::InvalidInput& e) {

@@ -1,5 +1,6 @@
 // trimkit mesh MODEL -o OUT --tolerance T [--relative] [--angle A]
-//   [--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N] [--json] [--strict]
+//   [--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N]
+//   [--face-timeout SECONDS] [--read-timeout SECONDS] [--json] [--strict]
 // Each face left out of the mesh (failed_faces) gets one stderr line,
 // "trimkit: MODEL: face N: reason"; the mesh of the other faces is still written.
 // --strict: exit status 3 when any face failed.
@@ -14,6 +15,7 @@
 #include "geom/flatten_instances.h"
 #include "io/read_model.h"
 #include "io/write_mesh.h"
+#include "read_options.h"
 #include "tess/tessellate_model.h"
 
 namespace trimkit::cli {
@@ -21,7 +23,8 @@ namespace {
 
 const char* const kMeshUsage =
     "trimkit mesh MODEL -o OUT --tolerance T [--relative] [--angle DEGREES] "
-    "[--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N] [--json] [--strict]";
+    "[--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N] "
+    "[--face-timeout SECONDS] [--read-timeout SECONDS] [--json] [--strict]";
 
 // Exit status of --strict when a face failed (0 success, 1 internal, 2 bad input).
 constexpr int kFailedFacesStatus = 3;
@@ -38,7 +41,8 @@ double seconds_since(Clock::time_point start) {
 
 int run_mesh(const std::vector<std::string>& argv) {
     const Arguments args(argv, {"--json", "--relative", "--strict"},
-                         {"-o", "--output", "--tolerance", "--angle", "--mode", "--trim-method", "--threads"});
+                         {"-o", "--output", "--tolerance", "--angle", "--mode", "--trim-method", "--threads",
+                          "--face-timeout", "--read-timeout"});
     args.expect_positionals(1, kMeshUsage);
     const std::string& path = args.positionals()[0];
     const std::string out = args.has("-o") ? args.value("-o", "") : args.value("--output", "");
@@ -68,10 +72,12 @@ int run_mesh(const std::vector<std::string>& argv) {
     const double threads = args.number("--threads", 0.0);
     if (threads < 0 || threads != std::floor(threads)) throw UsageError("--threads must be an integer >= 0");
     options.threads = static_cast<int>(threads);
+    options.face_timeout = args.number("--face-timeout", tess::kDefaultFaceTimeout);
+    if (!(options.face_timeout >= 0.0)) throw UsageError("--face-timeout must be seconds >= 0 (0 = no limit)");
 
     const auto start_all = Clock::now();
     auto start = Clock::now();
-    const geom::Model model = geom::flatten_instances(io::read_model(path));
+    const geom::Model model = geom::flatten_instances(io::read_model(path, read_options(args)));
     const double read_seconds = seconds_since(start);
     options.tolerance = tolerance;
     if (args.flag("--relative")) {
@@ -99,7 +105,8 @@ int run_mesh(const std::vector<std::string>& argv) {
                  << ", \"area_exact\": " << json_number(failed.area_exact)
                  << ", \"area_bound\": " << json_number(failed.area_bound)
                  << ", \"boundary_gap\": " << json_number(failed.boundary_gap)
-                 << ", \"boundary_bound\": " << json_number(failed.boundary_bound) << "}";
+                 << ", \"boundary_bound\": " << json_number(failed.boundary_bound)
+                 << ", \"seconds\": " << json_number(failed.seconds) << "}";
         }
         json << "], \"triangles\": " << result.mesh.triangle_count()
              << ", \"vertices\": " << result.mesh.vertex_count() << ", \"open_edges\": " << result.open_edges

@@ -293,6 +293,126 @@ def test_damaged_file_reports_error_and_leaves_scene_unchanged():
     print(f"    damaged file: {message.strip().splitlines()[-1]}")
 
 
+def scene_counts():
+    return {"objects": len(bpy.data.objects), "meshes": len(bpy.data.meshes), "texts": len(bpy.data.texts),
+            "collections": len(bpy.data.collections), "materials": len(bpy.data.materials)}
+
+
+def cancelling_limits(stage, after):
+    """limits.Limits whose cancel flag is set once `stage` reports more than `after`
+    (what Esc does in the window, from the working thread's side)."""
+    from trimkit import limits, modal_work
+    work = modal_work.new_limits()
+    seen = []
+
+    def on_progress(name, fraction):
+        seen.append((name, fraction))
+        if name == stage and fraction > after and not work.cancel.is_set():
+            seen.append(("cancel set", fraction))
+            work.cancel.set()
+    work.on_progress = on_progress
+    return work, seen, limits.Cancelled
+
+
+def test_cancelled_import_leaves_the_scene_unchanged():
+    """Cancel while meshing (IGES) and while reading (STEP, inside OCCT's transfer):
+    limits.Cancelled, and the object, mesh, text, collection and material counts are
+    what they were."""
+    from trimkit import importer
+    empty_scene()
+    import_iges(BRACKET)  # something in the scene already
+    cases = [(BRACKET, "mesh", 0.0)]
+    try:
+        cases.append((step_sample("as1-oc-214-mat.stp"), "read", 0.35))
+    except Skip as why:
+        print(f"    (no STEP case: {why})")
+    for path, stage, after in cases:
+        before = scene_counts()
+        limits, seen, cancelled = cancelling_limits(stage, after)
+        start = time.perf_counter()
+        try:
+            importer.import_file(bpy.context, path, importer.ImportSettings(), limits=limits)
+        except cancelled as err:
+            message = str(err)
+        else:
+            raise AssertionError(f"{path.name}: not cancelled; progress {seen[-3:]}")
+        assert scene_counts() == before, (path.name, before, scene_counts())
+        assert limits.cancel.is_set() and "cancelled" in message, message
+        at = next(f for name, f in seen if name == "cancel set")
+        last = seen[-1]
+        print(f"    {path.name}: cancel set in {stage} at {at:.2f}, last progress {last[0]} {last[1]:.2f}, "
+              f"stopped after {time.perf_counter() - start:.2f} s; counts {before}")
+
+
+def test_import_and_check_reports_give_the_total_time_and_its_parts():
+    """The import's timing (Object.trimkit.import_timing, also reported): the total, timed
+    from the read's start to the last object, is read + mesh + objects within rounding
+    (each part timed on its own); the check's seconds split into read and check."""
+    import re
+    from trimkit import mesh_check, operators
+    empty_scene()
+    try:
+        path = step_sample("as1-oc-214-mat.stp")
+        assert bpy.ops.import_scene.trimkit_step(filepath=str(path)) == {'FINISHED'}
+        step = [o for o in bpy.data.objects if o.type == 'MESH']
+        step_timing = step[0].trimkit.import_timing
+        assert all(o.trimkit.import_timing == step_timing for o in step)
+        total, parts = parse_timing(path.name, step_timing)
+        assert abs(total - sum(parts)) <= 0.015 and parts[0] > 0.0 and parts[1] > 0.0, step_timing
+        print(f"    {step_timing}")
+    except Skip as why:
+        print(f"    (no STEP timing: {why})")
+    empty_scene()
+    objects = import_iges(BRACKET, split='MODEL')
+    timing = objects[0].trimkit.import_timing
+    total, parts = parse_timing("bracket.igs", timing)
+    assert abs(total - sum(parts)) <= 0.015, timing  # the bracket's parts round to 0.00 s
+    seconds = {}
+    mesh_check.check_object(objects[0], seconds)
+    assert seconds["read"] > 0.0 and seconds["check"] > 0.0, seconds
+    line = operators.check_timing(1, seconds["read"] + seconds["check"] + 0.004, seconds)
+    match = re.fullmatch(r"checked 1 mesh\(es\) in ([0-9.]+) s \(read ([0-9.]+) s, check ([0-9.]+) s, "
+                         r"other ([0-9.]+) s\)", line)
+    assert match and abs(float(match[1]) - sum(map(float, match.groups()[1:]))) <= 0.015, line
+    assert bpy.ops.object.trimkit_check() == {'FINISHED'}
+    print(f"    {timing}; {line}")
+
+
+def test_modal_import_finishes_and_a_cancelled_one_leaves_the_scene_unchanged():
+    """The import as the file browser starts it, in a Blender window under Xvfb
+    (tests/blender/modal_import.py): RUNNING_MODAL, the window's timers keep running
+    while it reads and meshes, the objects appear at the end; a second import cancelled
+    while reading leaves the scene's counts unchanged."""
+    xvfb = shutil.which("xvfb-run")
+    if xvfb is None:
+        raise Skip("xvfb-run not installed (apt-get install xvfb)")
+    try:
+        source = step_sample("as1-oc-214-mat.stp")
+    except Skip:
+        source = BRACKET
+    empty_scene()
+    start = TMP / "modal" / "start.blend"  # opening a file skips the splash screen
+    start.parent.mkdir(parents=True, exist_ok=True)
+    assert bpy.ops.wm.save_as_mainfile(filepath=str(start)) == {'FINISHED'}
+    command = [xvfb, "-a", "-s", "-screen 0 1280x800x24", bpy.app.binary_path, "--factory-startup",
+               "--enable-event-simulate", "-p", "0", "0", "1280", "800", str(start),
+               "--python", str(ROOT / "tests" / "blender" / "modal_import.py"),
+               "--", "--input", str(source)]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    lines = [l for l in run.stdout.splitlines() if l.startswith("modal:")]
+    assert run.returncode == 0 and "modal: done" in lines, (run.returncode, run.stdout[-3000:], run.stderr[-2000:])
+    print("    " + "\n    ".join(lines[:-1]))
+
+
+def parse_timing(name, line):
+    """(total, [read, mesh, (waiting,) objects]) of an import_timing line."""
+    import re
+    match = re.fullmatch(re.escape(name) + r": ([0-9.]+) s \(read ([0-9.]+) s, mesh ([0-9.]+) s"
+                         r"(?:, waiting ([0-9.]+) s)?, objects ([0-9.]+) s\)", line)
+    assert match, line
+    return float(match[1]), [float(x) for x in match.groups()[1:] if x is not None]
+
+
 def test_damaged_step_reports_error_without_crashing_blender():
     # A damaged type name made Open CASCADE dereference a null handle (a segfault that
     # took Blender down); now the operator reports it and the scene is unchanged.
@@ -1044,7 +1164,7 @@ def test_importer_conventions_files_metadata_presets_panels_select_and_reload():
     names = {p.name for folder_ in presets for p in pathlib.Path(folder_).glob("*.py")}
     assert {"Preview.py", "Render.py", "Export.py"} <= names, names
     groups = [c for c in bpy.types.Panel.__subclasses__() if c.__name__.startswith("IMPORT_PT_trimkit_")]
-    assert sorted(c.bl_label for c in groups) == ["Mesh", "Objects", "Shading & UVs", "Units"], groups
+    assert sorted(c.bl_label for c in groups) == ["Limits", "Mesh", "Objects", "Shading & UVs", "Units"], groups
     assert all(c.bl_parent_id == "FILE_PT_operator" and c.bl_space_type == 'FILE_BROWSER' for c in groups)
 
     # Select CAD Face / Select Similar CAD Faces in Edit Mode.
@@ -1089,7 +1209,7 @@ def test_importer_conventions_files_metadata_presets_panels_select_and_reload():
     (folder / "a.igs").unlink()
     message = expect_cancelled(bpy.ops.object.trimkit_reload)
     assert "a.igs" in message and "cannot read" in message, message
-    print(f"    2 files in one import, metadata, 4 option groups, STEP presets; Select CAD Face: "
+    print(f"    2 files in one import, metadata, {len(groups)} option groups, STEP presets; Select CAD Face: "
           f"{int((faces == 1).sum())} faces; reload: {objects[1].trimkit.triangles} -> {obj.trimkit.triangles} "
           f"triangles, {obj.trimkit.failed_faces} failed face; gone: {message.strip().splitlines()[-1][:60]}")
 

@@ -58,7 +58,7 @@ bool makes_faces(int type) {
 
 }  // namespace
 
-IgesReader::IgesReader(const IgesFile& file) : file_(file) {}
+IgesReader::IgesReader(const IgesFile& file, ReadMonitor* monitor) : file_(file), monitor_(monitor) {}
 
 IgesReader::Nesting::Nesting(IgesReader& r, int de) : r_(r) {
     if (++r_.depth_ > kMaxIgesNesting) {
@@ -267,6 +267,10 @@ geom::Model IgesReader::read() {
     };
     bool has_surfaces = false;
     for (int i = 0; i < n; ++i) {
+        if (monitor_) {
+            monitor_->check();
+            monitor_->report(static_cast<double>(i) / n);
+        }
         const IgesDirectoryEntry& e = file_.entry(i);
         if (e.type < 0) {
             warn("D" + std::to_string(e.sequence) + ": unreadable directory entry skipped");
@@ -283,6 +287,7 @@ geom::Model IgesReader::read() {
         // status (files with every entity marked dependent exist).
         for (int i = 0; i < n; ++i) {
             const IgesDirectoryEntry& e = file_.entry(i);
+            if (monitor_) monitor_->check();
             if (e.type > 0 && referenced_[i] == 0 && e.subordinate != 0 && makes_faces(e.type)) run(i);
         }
     }

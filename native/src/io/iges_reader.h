@@ -20,6 +20,7 @@
 #include "geom/model.h"
 #include "io/iges_file.h"
 #include "io/iges_parameter_cursor.h"
+#include "io/read_monitor.h"
 
 namespace trimkit::io {
 
@@ -27,6 +28,13 @@ namespace trimkit::io {
 // curves, 124 chains, nested groups and subfigures). Real files nest a few
 // levels; a cycle in a hostile file stops here instead of overflowing the stack.
 constexpr int kMaxIgesNesting = 32;
+// Most entity visits (translate calls) one file may cause: kMaxIgesVisitsPerEntry per
+// directory entry, at least kMinIgesVisits. Depth alone does not bound the work: 30
+// groups each holding the one below twice are 2^30 paths to one face
+// (tests/fuzz/regressions/iges/group_fan_out.igs). Sound files visit each entity a few
+// times (a subfigure definition's members once per instance inside another definition).
+constexpr int kMaxIgesVisitsPerEntry = 16;
+constexpr long long kMinIgesVisits = 4096;
 
 // A surface entity converted to NURBS, with the map from the entity's native
 // IGES parameters (s, t) (those of its parameter-space trim curves) to the
@@ -60,7 +68,8 @@ using BoundaryHint = std::vector<Eigen::Vector3d>;
 
 class IgesReader {
 public:
-    explicit IgesReader(const IgesFile& file);
+    // monitor: checked (ReadStopped) and told the progress between root entities.
+    explicit IgesReader(const IgesFile& file, ReadMonitor* monitor = nullptr);
     geom::Model read();
 
     // ---- shared helpers (iges_reader.cpp) ----
@@ -148,8 +157,10 @@ private:
     void set_units();
 
     const IgesFile& file_;
+    ReadMonitor* monitor_ = nullptr;
     geom::Model model_;
     int depth_ = 0;
+    long long visits_ = 0;  // translate calls so far (kMaxIgesVisitsPerEntry)
     std::map<int, std::vector<geom::NurbsCurve3d>> curve_cache_;
     std::map<int, Eigen::Affine3d> transform_cache_;
     std::map<int, int> color_cache_;

@@ -140,6 +140,12 @@ int IgesReader::definition_body(int def, int depth) {
 std::vector<int> IgesReader::translate(int de, const Eigen::Affine3d& placement, int depth) {
     if (depth > kMaxIgesNesting)
         fail(de, "groups or subfigures nested deeper than " + std::to_string(kMaxIgesNesting));
+    const long long max_visits =
+        std::max(kMinIgesVisits, kMaxIgesVisitsPerEntry * static_cast<long long>(file_.entries().size()));
+    if (++visits_ > max_visits)
+        fail(de, "groups or subfigures reach their members more than " + std::to_string(max_visits) +
+                     " times (the same entities held many times over)");
+    if (monitor_) monitor_->check();
     const IgesDirectoryEntry& e = entry_of(de);
     const int type = e.type;
     std::vector<int> faces;

@@ -286,7 +286,7 @@ geom::Face checked_face(const TopoDS_Face& face, const TopTools_IndexedMapOfShap
 }  // namespace
 
 std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& shape, const ShapeStyle& style,
-                           const std::string& fallback_name, int& face_number) {
+                           const std::string& fallback_name, int& face_number, ReadMonitor* monitor) {
     TopTools_IndexedMapOfShape edge_map;
     TopExp::MapShapes(shape, TopAbs_EDGE, edge_map);
     const int edge_offset = static_cast<int>(model.edges.size());
@@ -295,6 +295,7 @@ std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& shape, const 
     std::vector<TopoDS_Shape> occurrences;
     std::vector<int> occurrence_face;
     for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+        if (monitor) monitor->check();
         const TopoDS_Face& face = TopoDS::Face(it.Current());
         occurrences.push_back(face);
         ++face_number;

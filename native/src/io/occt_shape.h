@@ -15,6 +15,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include "geom/model.h"
+#include "io/read_monitor.h"
 
 namespace trimkit::io {
 
@@ -30,7 +31,8 @@ struct ShapeStyle {
 // gives none; returns the indices of the new bodies. Faces that cannot be
 // translated are left out with a warning in Model::warnings naming them
 // ("face 12 skipped: ..."), counting faces from `first_face_number`.
+// monitor: checked before each face (ReadStopped propagates; it is not a skipped face).
 std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& shape, const ShapeStyle& style,
-                           const std::string& fallback_name, int& face_number);
+                           const std::string& fallback_name, int& face_number, ReadMonitor* monitor = nullptr);
 
 }  // namespace trimkit::io

@@ -7,11 +7,14 @@
 #include <string>
 
 #include "geom/model.h"
+#include "io/read_options.h"
 
 namespace trimkit::io {
 
 // Throws geom::ReadError ("FILE: reason") when OCCT cannot read the file or it
 // holds no face that converts. Faces that fail are skipped with a warning.
-geom::Model read_brep(const std::string& path);
+// `options`: BRepTools::Read runs under an OCCT progress indicator (timeout, cancel,
+// progress up to 0.5); the translation checks them between faces (ReadStopped).
+geom::Model read_brep(const std::string& path, const ReadOptions& options = {});
 
 }  // namespace trimkit::io

@@ -17,6 +17,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include "geom/error.h"
+#include "io/occt_progress.h"
 #include "io/occt_shape.h"
 #include "io/occt_support.h"
 
@@ -26,7 +27,12 @@ namespace {
 // Blank lines allowed before the header line (files written by DBRep start with one).
 constexpr int kMaxLeadingBlankLines = 16;
 
-geom::Model read_brep_unguarded(const std::string& path) {
+// Progress: BRepTools::Read up to this fraction, the translation after it.
+constexpr double kReadShare = 0.5;
+
+geom::Model read_brep_unguarded(const std::string& path, const ReadOptions& options) {
+    ReadMonitor monitor(path, options);
+    monitor.report(0.0);
     {
         std::ifstream probe(path);
         if (!probe) throw geom::ReadError(path, 0, "cannot open the file");
@@ -43,14 +49,20 @@ geom::Model read_brep_unguarded(const std::string& path) {
     }
     TopoDS_Shape shape;
     BRep_Builder builder;
-    if (!BRepTools::Read(shape, path.c_str(), builder) || shape.IsNull())
+    monitor.stage(0.0, kReadShare);
+    Handle(OcctProgress) progress = new OcctProgress(monitor);
+    const bool read = BRepTools::Read(shape, path.c_str(), builder, progress->Start());
+    monitor.check();
+    if (!read || shape.IsNull())
         throw geom::ReadError(path, 0, "Open CASCADE cannot read this .brep file (BRepTools::Read failed)");
     geom::Model model;
     model.units = "mm";
     model.scale_to_metres = 1e-3;
     int face_number = 0;
     const std::string stem = std::filesystem::path(path).stem().string();
-    add_shape(model, shape, ShapeStyle{}, stem, face_number);
+    monitor.stage(kReadShare, 1.0);
+    add_shape(model, shape, ShapeStyle{}, stem, face_number, &monitor);
+    monitor.report(1.0);
     if (model.faces.empty())
         throw geom::ReadError(path, 0, face_number == 0 ? std::string("the .brep file has no faces")
                                                         : "no face of the .brep file converts (" +
@@ -60,12 +72,12 @@ geom::Model read_brep_unguarded(const std::string& path) {
 
 }  // namespace
 
-geom::Model read_brep(const std::string& path) {
+geom::Model read_brep(const std::string& path, const ReadOptions& options) {
     silence_occt_stdout();
     try {
         OcctSignalGuard guard;
         OCC_CATCH_SIGNALS
-        return read_brep_unguarded(path);
+        return read_brep_unguarded(path, options);
     } catch (const Standard_Failure& e) {
         throw geom::ReadError(path, 0, "Open CASCADE failed (a damaged file?): " + failure_text(e));
     }

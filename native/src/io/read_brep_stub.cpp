@@ -5,7 +5,7 @@
 
 namespace trimkit::io {
 
-geom::Model read_brep(const std::string& path) {
+geom::Model read_brep(const std::string& path, const ReadOptions&) {
     throw geom::ReadError(path, 0, ".brep import needs trimkit built with Open CASCADE");
 }
 

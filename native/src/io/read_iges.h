@@ -8,6 +8,7 @@
 #include <string>
 
 #include "geom/model.h"
+#include "io/read_options.h"
 
 namespace trimkit::io {
 
@@ -16,9 +17,11 @@ namespace trimkit::io {
 // entities yields a face. Entities that cannot be read (unsupported types,
 // broken data, dangling pointers) are skipped with a message in
 // Model::warnings ("D123: ..."); per-face remarks go to Face::warnings.
-geom::Model read_iges(const std::string& path);
+// `options`: timeout and cancel checked between root entities (ReadStopped), progress
+// reported as the fraction of directory entries done (parsing the text first: 0.1).
+geom::Model read_iges(const std::string& path, const ReadOptions& options = {});
 
 // The same for IGES text already in memory; `name` is used in messages.
-geom::Model read_iges_text(const std::string& text, const std::string& name);
+geom::Model read_iges_text(const std::string& text, const std::string& name, const ReadOptions& options = {});
 
 }  // namespace trimkit::io

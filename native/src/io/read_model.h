@@ -7,9 +7,12 @@
 #include <string>
 
 #include "geom/model.h"
+#include "io/read_options.h"
 
 namespace trimkit::io {
 
-geom::Model read_model(const std::string& path);
+// `options`: the read's timeout, cancel flag and progress (read_options.h); a read
+// stopped by them throws ReadStopped.
+geom::Model read_model(const std::string& path, const ReadOptions& options = {});
 
 }  // namespace trimkit::io

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "geom/error.h"
+#include "io/occt_progress.h"
 #include "io/occt_shape.h"
 #include "io/occt_support.h"
 
@@ -46,6 +47,10 @@ namespace {
 // Assembly nesting followed at most (real files nest a few levels; a cyclic reference
 // in a hostile file stops here).
 constexpr int kMaxAssemblyDepth = 64;
+// Part occurrences (placed instances) one file may make. Depth alone does not bound
+// them: assemblies that each hold the one below twice make 2^depth occurrences. The
+// largest shared assembly (as1-oc-214-mat.stp) has 18.
+constexpr std::size_t kMaxOccurrences = 200'000;
 
 std::string label_name(const TDF_Label& label) {
     Handle(TDataStd_Name) name;
@@ -105,11 +110,13 @@ private:
 // Walks the XCAF tree: each part label translated once, each occurrence an Instance.
 class AssemblyWalker {
 public:
-    AssemblyWalker(geom::Model& model, StepStyles& styles) : model_(model), styles_(styles) {}
+    AssemblyWalker(geom::Model& model, StepStyles& styles, ReadMonitor& monitor)
+        : model_(model), styles_(styles), monitor_(monitor) {}
 
     void walk(const TDF_Label& label, const Eigen::Affine3d& placement, const std::vector<std::string>& path,
               const std::string& occurrence_name, int depth) {
         if (depth > kMaxAssemblyDepth) throw std::runtime_error("assembly nesting deeper than 64 levels");
+        monitor_.check();
         const Handle(XCAFDoc_ShapeTool)& shapes = styles_.shapes();
         if (XCAFDoc_ShapeTool::IsAssembly(label)) {
             std::vector<std::string> below = path;
@@ -129,6 +136,9 @@ public:
         }
         const std::vector<int>& bodies = part_bodies(label, shapes);
         for (int body : bodies) {
+            if (model_.instances.size() >= kMaxOccurrences)
+                throw std::runtime_error("the assembly places more than " + std::to_string(kMaxOccurrences) +
+                                         " part occurrences (assemblies holding the same parts many times over)");
             geom::Instance instance;
             instance.body = body;
             instance.transform = placement;
@@ -145,7 +155,8 @@ private:
         if (found != parts_.end()) return found->second;
         const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
         std::vector<int> bodies;
-        if (!shape.IsNull()) bodies = add_shape(model_, shape, styles_.style(), label_name(label), face_number_);
+        if (!shape.IsNull())
+            bodies = add_shape(model_, shape, styles_.style(), label_name(label), face_number_, &monitor_);
         (void)shapes;
         return parts_[key] = std::move(bodies);
     }
@@ -158,6 +169,7 @@ private:
 
     geom::Model& model_;
     StepStyles& styles_;
+    ReadMonitor& monitor_;
     std::map<std::string, std::vector<int>> parts_;
     int face_number_ = 0;
 };
@@ -224,7 +236,15 @@ private:
     Handle(TDocStd_Document) doc_;
 };
 
-geom::Model read_step_unguarded(const std::string& path) {
+// Progress: parsing (ReadFile reports nothing) up to kParseShare, the transfer (with
+// OCCT's healing) up to kTransferShare, the translation after it.
+constexpr double kParseShare = 0.3;
+constexpr double kTransferShare = 0.85;
+
+geom::Model read_step_unguarded(const std::string& path, const ReadOptions& options) {
+    ReadMonitor monitor(path, options);
+    monitor.stage(0.0, kParseShare);
+    monitor.report(0.0);
     check_step_header(path);
     ScratchDocument scratch;
     Handle(TDocStd_Document)& doc = scratch.get();
@@ -236,7 +256,13 @@ geom::Model read_step_unguarded(const std::string& path) {
         throw geom::ReadError(path, 0, "Open CASCADE cannot read this file as STEP" +
                                            (why.empty() ? std::string() : ": " + why));
     }
-    if (!reader.Transfer(doc)) {
+    monitor.report(1.0);
+    monitor.check();
+    monitor.stage(kParseShare, kTransferShare);
+    Handle(OcctProgress) progress = new OcctProgress(monitor);
+    const bool transferred = reader.Transfer(doc, progress->Start());
+    monitor.check();  // a user break ends the transfer early, with or without shapes
+    if (!transferred) {
         const std::string why = read_failures(reader);
         throw geom::ReadError(path, 0, "Open CASCADE transfers no shape from the STEP file" +
                                            (why.empty() ? std::string() : ": " + why));
@@ -248,12 +274,15 @@ geom::Model read_step_unguarded(const std::string& path) {
     model.scale_to_metres = 1e-3;
     TDF_LabelSequence roots;
     styles.shapes()->GetFreeShapes(roots);
-    AssemblyWalker walker(model, styles);
+    monitor.stage(kTransferShare, 1.0);
+    AssemblyWalker walker(model, styles, monitor);
     for (int i = 1; i <= roots.Length(); ++i) {
+        monitor.report(static_cast<double>(i - 1) / roots.Length());
         const TDF_Label root = roots.Value(i);
         const Eigen::Affine3d placement = to_eigen(XCAFDoc_ShapeTool::GetLocation(root).Transformation());
         walker.walk(root, placement, {}, label_name(root), 0);
     }
+    monitor.report(1.0);
     drop_trivial_instances(model);
     if (model.faces.empty()) {
         for (const std::string& w : model.warnings)
@@ -268,15 +297,17 @@ geom::Model read_step_unguarded(const std::string& path) {
 
 bool step_supported() { return true; }
 
-geom::Model read_step(const std::string& path) {
+geom::Model read_step(const std::string& path, const ReadOptions& options) {
     silence_occt_stdout();
     try {
         OcctSignalGuard guard;
         OCC_CATCH_SIGNALS
-        return read_step_unguarded(path);
+        return read_step_unguarded(path, options);
     } catch (const Standard_Failure& e) {
         throw geom::ReadError(path, 0, "Open CASCADE failed (a damaged file?): " + failure_text(e));
     } catch (const geom::ReadError&) {
+        throw;
+    } catch (const ReadStopped&) {
         throw;
     } catch (const std::runtime_error& e) {
         throw geom::ReadError(path, 0, e.what());

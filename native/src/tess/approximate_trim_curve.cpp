@@ -123,8 +123,9 @@ long yang_steps(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, double
 // Appends c(t), S(c(t)) for t = t0 + (t1 - t0) s, s in `s_values` (ascending, s > 0);
 // t0's point is expected to be present already.
 void append_points(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, double t0, double t1,
-                   const std::vector<double>& s_values, TrimPolyline* out) {
+                   const std::vector<double>& s_values, TrimPolyline* out, mesh::Deadline* deadline) {
     for (double s : s_values) {
+        mesh::check_deadline(deadline, "trim curve approximation");
         PolylinePoint p;
         p.t = s >= 1.0 ? t1 : t0 + s * (t1 - t0);
         p.uv = c.evaluate(p.t);
@@ -142,21 +143,22 @@ std::vector<double> uniform_steps(long n) {
 }  // namespace
 
 TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
-                                    double tolerance, TrimMethod method) {
+                                    double tolerance, TrimMethod method, mesh::Deadline* deadline) {
     if (!std::isfinite(tolerance) || !(tolerance > 0.0))
         throw geom::InvalidInput("approximate_trim_curve: tolerance = " +
                                  geom::format_value(tolerance) + "; expected a finite value > 0");
     TrimPolyline out;
     const double ta = c.domain().first;
-    append_points(S, c, ta, ta, {1.0}, &out);
+    append_points(S, c, ta, ta, {1.0}, &out, deadline);
 
     switch (method) {
     case TrimMethod::kBezier3d: {
         const double budget = kTrimGamma * tolerance;
         for (const LiftedPiece& piece : lift_trim_curve(S, c)) {
+            if (deadline) deadline->check_now("trim curve approximation");
             if (!piece.exact) {
                 const long n = yang_steps(S, c, piece.t0, piece.t1, budget);
-                append_points(S, c, piece.t0, piece.t1, uniform_steps(n), &out);
+                append_points(S, c, piece.t0, piece.t1, uniform_steps(n), &out, deadline);
                 continue;
             }
             const std::vector<Eigen::Vector3d> P2 = homogeneous_piece(c, piece.t0, piece.t1);
@@ -165,7 +167,7 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
             const SurfaceDerivativeBounds Ms = surface_derivative_bounds(S, box);
             std::vector<double> s_values;
             Subdivider{budget, std::hypot(Ms.Mu, Ms.Mv), &s_values}.run(piece.P, P2, 0.0, 1.0, 0);
-            append_points(S, c, piece.t0, piece.t1, s_values, &out);
+            append_points(S, c, piece.t0, piece.t1, s_values, &out, deadline);
         }
         const geom::NurbsCurve2d::Box box = c.control_box();
         const SurfaceDerivativeBounds Ms =
@@ -177,7 +179,7 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
         const std::vector<double> breaks = trim_curve_breaks(S, c);
         for (size_t i = 0; i + 1 < breaks.size(); ++i) {
             const long n = yang_steps(S, c, breaks[i], breaks[i + 1], tolerance);
-            append_points(S, c, breaks[i], breaks[i + 1], uniform_steps(n), &out);
+            append_points(S, c, breaks[i], breaks[i + 1], uniform_steps(n), &out, deadline);
         }
         break;
     }
@@ -188,7 +190,7 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
             const long n = static_cast<long>(std::clamp(
                 std::ceil((t1 - t0) * std::sqrt(Mtt / (8.0 * tolerance))), 1.0,
                 double(kMaxStepsPerPiece)));
-            append_points(S, c, t0, t1, uniform_steps(n), &out);
+            append_points(S, c, t0, t1, uniform_steps(n), &out, deadline);
         }
         break;
     }

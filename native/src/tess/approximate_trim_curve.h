@@ -6,6 +6,7 @@
 
 #include "geom/nurbs_curve.h"
 #include "geom/nurbs_surface.h"
+#include "mesh/deadline.h"
 #include "tess/trim_polyline.h"
 
 namespace trimkit::tess {
@@ -41,7 +42,9 @@ constexpr long kMaxStepsPerPiece = 1L << 20;
 // Simplification (kBezier3d) is per coedge: its end points stay, so shared edges
 // and loop joints keep their vertices.
 // Throws InvalidInput if tolerance is not finite and > 0.
+// `deadline`: checked per lifted piece and per point evaluated (up to kMaxStepsPerPiece a
+// piece); throws mesh::DeadlineExceeded once it has passed.
 TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
-                                    double tolerance, TrimMethod method);
+                                    double tolerance, TrimMethod method, mesh::Deadline* deadline = nullptr);
 
 }  // namespace trimkit::tess

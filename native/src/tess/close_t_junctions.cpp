@@ -22,9 +22,10 @@ constexpr double kMinSplitShare = 1e-6;
 
 }  // namespace
 
-std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
+std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerate) {
     std::size_t inserted = 0;
-    for (int pass = 0; pass < kMaxPasses; ++pass) {
+    bool gave_up = false;
+    for (int pass = 0; pass < kMaxPasses && !gave_up; ++pass) {
         // Topology by position: a face's vertex and the other face's vertex at the
         // same position are one vertex (each keeps its own uv and normal).
         const std::vector<std::int32_t> group = position_groups(mesh);
@@ -57,7 +58,13 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
         std::vector<std::array<std::int32_t, 3>> added;
         std::vector<std::int32_t> added_ids;
         std::size_t pass_inserted = 0;
+        const std::size_t max_tests = kMaxJunctionTestsPerSide * open.size();
+        std::size_t tests = 0;
         for (const TriangleSide& side : open) {
+            if (tests > max_tests) {
+                gave_up = true;
+                break;
+            }
             if (split[side.triangle]) continue;
             const auto e = side_ends(side);
             const Eigen::Vector3d a = mesh.positions[e[0]];
@@ -74,6 +81,7 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
                     for (long long z = lo.z; z <= hi.z; ++z) {
                         const auto found = grid.find({x, y, z});
                         if (found == grid.end()) continue;
+                        tests += found->second.size();
                         for (int v : found->second) {
                             if (v == e[0] || v == e[1]) continue;
                             const Eigen::Vector3d p = mesh.positions[v];
@@ -132,6 +140,7 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance) {
         inserted += pass_inserted;
         if (pass_inserted == 0) break;
     }
+    if (degenerate) *degenerate = gave_up;
     return inserted;
 }
 

@@ -18,6 +18,12 @@ namespace trimkit::tess {
 // `distance` (model units, >= 0) and strictly between their ends. Face ids follow
 // the split triangle; flagged edges are left as they are (recompute them). Returns the number of
 // vertices inserted into edges.
-std::size_t close_t_junctions(mesh::Mesh& mesh, double distance);
+// A pass that tests more than kMaxJunctionTestsPerSide vertices per open side meets a
+// degenerate boundary (a self-crossing trim loop's crossings piled together): it stops
+// after the side it is on (the sides done so far stay split), no further pass runs,
+// and *degenerate (if given) is set; the tests and splits would grow with the square
+// of the pile.
+constexpr std::size_t kMaxJunctionTestsPerSide = 256;
+std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerate = nullptr);
 
 }  // namespace trimkit::tess

@@ -36,6 +36,7 @@ struct TrimSegments {
     double margin = 0.0;              // absolute, in (u,v)
     bool active = false;              // false: every cell uses `tolerance`
     const RevolutionShape* shape = nullptr;  // exact bound (revolution_error) if set
+    mesh::Deadline* deadline = nullptr;      // checked per node and per segment test
 };
 
 // The cell's bound: revolution_error where it applies, else bilinear_error.
@@ -112,11 +113,13 @@ double crossing_offset(TrimSegments& trims, const std::vector<int>& segments, co
 // Even-odd test of (u, v) against all segments, half-open in v as in trim_cells.
 bool inside_loops(const TrimSegments& trims, double u, double v) {
     bool in = false;
-    for (const auto& [a, b] : trims.segments)
+    for (const auto& [a, b] : trims.segments) {
+        mesh::check_deadline(trims.deadline, "kd subdivision");
         if ((a.y() > v) != (b.y() > v)) {
             const double x = a.x() + (v - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
             if (x > u) in = !in;
         }
+    }
     return in;
 }
 
@@ -132,8 +135,10 @@ void subdivide(const BezierPatch& patch, TrimSegments& trims, const Stretch& str
                ErrorMode mode, double min_du, double min_dv, std::vector<Cell>& leaves) {
     auto meeting = [&](const BezierPatch& p, const std::vector<int>& from, std::vector<int>& out) {
         const Cell r = stretch(Cell{p.u0, p.u1, p.v0, p.v1});
-        for (int s : from)
+        for (int s : from) {
+            mesh::check_deadline(trims.deadline, "kd subdivision");
             if (meets(trims.segments[s], r.u0, r.u1, r.v0, r.v1, trims.margin)) out.push_back(s);
+        }
     };
     // Explicit stack: deep kd-trees on fine tolerances must not overflow the call stack.
     std::vector<Node> stack(1);
@@ -144,6 +149,7 @@ void subdivide(const BezierPatch& patch, TrimSegments& trims, const Stretch& str
         meeting(patch, all, stack[0].segments);
     }
     while (!stack.empty()) {
+        mesh::check_deadline(trims.deadline, "kd subdivision");
         Node node = std::move(stack.back());
         stack.pop_back();
         const BezierPatch& current = node.patch;
@@ -261,9 +267,10 @@ CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedB
 CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
                         double tolerance, double boundary_tolerance, double total_tolerance,
                         const std::vector<TrimPolygon>& loops, ErrorMode mode,
-                        const RevolutionShape* shape) {
+                        const RevolutionShape* shape, mesh::Deadline* deadline) {
     TrimSegments trims;
     trims.shape = shape;
+    trims.deadline = deadline;
     trims.tolerance = tolerance;
     trims.boundary_tolerance = boundary_tolerance;
     trims.total_tolerance = total_tolerance;

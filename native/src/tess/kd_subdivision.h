@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "geom/nurbs_surface.h"
+#include "mesh/deadline.h"
 #include "tess/revolution_error.h"
 #include "tess/tessellation_options.h"
 #include "tess/trim_polyline.h"
@@ -57,11 +58,13 @@ CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedB
 // With a `shape` (revolution_shape of the surface), cells are bounded by
 // revolution_error instead (its exact distance bound, in both modes); a cell that
 // bound does not cover falls back to bilinear_error.
+// `deadline`: checked per kd node and per trim segment tested against a node; throws
+// mesh::DeadlineExceeded once it has passed.
 constexpr double kTrimMeetMargin = 1e-9;
 CellGrid kd_subdivision(const geom::NurbsSurface& surface, const Eigen::AlignedBox2d& box,
                         double tolerance, double boundary_tolerance, double total_tolerance,
                         const std::vector<TrimPolygon>& loops, ErrorMode mode,
-                        const RevolutionShape* shape = nullptr);
+                        const RevolutionShape* shape = nullptr, mesh::Deadline* deadline = nullptr);
 
 // The boundary points of every cell (CellGrid::boundary) for cells tiling a box.
 std::vector<std::vector<Eigen::Vector2d>> cell_boundaries(const std::vector<Cell>& cells);

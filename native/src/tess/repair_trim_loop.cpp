@@ -47,7 +47,8 @@ double perimeter(const std::vector<PolylinePoint>& P) {
 // the piece's (u,v) triangles times the area element |S_u x S_v| at their centroids
 // (triangles spanned by the xyz would not do: points along a curved 3D curve span
 // area however thin the piece).
-double width_on_surface(const std::vector<PolylinePoint>& P, const geom::NurbsSurface& surface) {
+double width_on_surface(const std::vector<PolylinePoint>& P, const geom::NurbsSurface& surface,
+                        mesh::Deadline* deadline) {
     std::vector<Eigen::Vector2d> uv;
     std::vector<int> ring;
     double length = 0.0;
@@ -57,7 +58,7 @@ double width_on_surface(const std::vector<PolylinePoint>& P, const geom::NurbsSu
         length += (P[(i + 1) % P.size()].xyz - P[i].xyz).norm();
     }
     double area = 0.0;
-    for (const auto& t : triangulate_polygon(uv, ring)) {
+    for (const auto& t : triangulate_polygon(uv, ring, {}, deadline)) {
         const Eigen::Vector2d c = (uv[t[0]] + uv[t[1]] + uv[t[2]]) / 3.0;
         const geom::SurfaceDerivatives d = surface.derivatives(c.x(), c.y());
         area += 0.5 * std::abs(cross(uv[t[1]] - uv[t[0]], uv[t[2]] - uv[t[0]])) * d.Su.cross(d.Sv).norm();
@@ -109,7 +110,8 @@ void surface_chords(const geom::NurbsSurface& S, const Eigen::Vector2d& a, const
 // Distances to the boundary are looked up in a grid of cells at least `reach`
 // wide (at most kMaxGridParts segment parts filed), so a sample with no boundary
 // within reach is found without scanning: the piece is then wide.
-PieceExtent piece_extent(const std::vector<PolylinePoint>& P, const geom::NurbsSurface& S, double reach) {
+PieceExtent piece_extent(const std::vector<PolylinePoint>& P, const geom::NurbsSurface& S, double reach,
+                         mesh::Deadline* deadline) {
     PieceExtent e;
     const size_t n = P.size();
     std::vector<Eigen::Vector2d> uv(n);
@@ -156,7 +158,8 @@ PieceExtent piece_extent(const std::vector<PolylinePoint>& P, const geom::NurbsS
                 }
         return best;
     };
-    for (const auto& t : triangulate_polygon(uv, ring)) {
+    for (const auto& t : triangulate_polygon(uv, ring, {}, deadline)) {
+        mesh::check_deadline(deadline, "trim loop repair");
         const Eigen::Vector2d o = uv[t[0]];
         const double area3 = 0.5 * (X[t[1]] - X[t[0]]).cross(X[t[2]] - X[t[0]]).norm();
         const int N = std::clamp(static_cast<int>(std::ceil(2.0 * std::sqrt(area3) / reach)), 1, kMaxSampleDivisions);
@@ -236,7 +239,7 @@ int intersect(const std::vector<PolylinePoint>& P, int i, int j, double snap,
 
 // Splits a closed sequence at points it visits twice (within snap).
 std::vector<std::vector<PolylinePoint>> split_at_repeats(const std::vector<PolylinePoint>& Q,
-                                                         double snap) {
+                                                         double snap, mesh::Deadline* deadline) {
     Eigen::AlignedBox2d box;
     for (const auto& p : Q) box.extend(p.uv);
     const double cell = std::max(snap, 1e-12 * (1.0 + box.diagonal().norm() +
@@ -249,6 +252,7 @@ std::vector<std::vector<PolylinePoint>> split_at_repeats(const std::vector<Polyl
     std::vector<PolylinePoint> stack;
     std::vector<std::vector<PolylinePoint>> loops;
     for (const PolylinePoint& q : Q) {
+        mesh::check_deadline(deadline, "trim loop repair");
         const auto k = key(q.uv);
         int found = -1;
         for (long long dx = -1; dx <= 1 && found < 0; ++dx)
@@ -312,7 +316,8 @@ TrimPolygon join_trim_loop(const std::vector<TrimPolyline>& coedges, bool outer,
 
 std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_uv,
                                           LoopRepairReport* report, bool face_reversed,
-                                          const geom::NurbsSurface* surface, double min_width) {
+                                          const geom::NurbsSurface* surface, double min_width,
+                                          mesh::Deadline* deadline) {
     LoopRepairReport local;
     LoopRepairReport& rep = report ? *report : local;
     std::vector<PolylinePoint> P = merge_close(loop.points, snap_uv);
@@ -339,6 +344,7 @@ std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_u
     std::vector<Insertion> cuts;
     for (int oi = 0; oi < n; ++oi)
         for (int oj = oi + 1; oj < n && lo[order[oj]] <= hi[order[oi]]; ++oj) {
+            mesh::check_deadline(deadline, "trim loop repair");
             const int i = order[oi], j = order[oj];
             const double vlo_i = std::min(P[i].uv.y(), P[(i + 1) % n].uv.y()) - snap_uv;
             const double vhi_i = std::max(P[i].uv.y(), P[(i + 1) % n].uv.y()) + snap_uv;
@@ -373,12 +379,13 @@ std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_u
         rep.dropped_width = std::max(rep.dropped_width, extent->width);
         rep.dropped_area += extent->area;
     };
-    for (std::vector<PolylinePoint>& piece : split_at_repeats(Q, snap_uv)) {
+    for (std::vector<PolylinePoint>& piece : split_at_repeats(Q, snap_uv, deadline)) {
+        mesh::check_deadline(deadline, "trim loop repair");
         piece = merge_close(piece, snap_uv);
         const double a = piece.size() >= 3 ? signed_area(piece) : 0.0;
         if (piece.size() < 3 || std::abs(a) <= 0.5 * snap_uv * perimeter(piece)) {
             if (piece.size() >= 3 && surface && reach > 0.0) {
-                const PieceExtent extent = piece_extent(piece, *surface, reach);
+                const PieceExtent extent = piece_extent(piece, *surface, reach, deadline);
                 record_drop(&extent);
             } else {
                 record_drop(nullptr);
@@ -387,9 +394,9 @@ std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_u
         }
         if ((loop.outer && a < 0.0) || (!loop.outer && a > 0.0))
             std::reverse(piece.begin(), piece.end());
-        if (!cuts.empty() && surface && min_width > 0.0 && width_on_surface(piece, *surface) <= min_width) {
+        if (!cuts.empty() && surface && min_width > 0.0 && width_on_surface(piece, *surface, deadline) <= min_width) {
             // Thin on average; a sliver only if thin everywhere.
-            const PieceExtent extent = piece_extent(piece, *surface, reach);
+            const PieceExtent extent = piece_extent(piece, *surface, reach, deadline);
             if (!extent.wide) {
                 record_drop(&extent);
                 continue;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geom/nurbs_surface.h"
+#include "mesh/deadline.h"
 #include "tess/trim_polyline.h"
 
 namespace trimkit::tess {
@@ -69,11 +70,13 @@ TrimPolygon join_trim_loop(const std::vector<TrimPolyline>& coedges, bool outer,
 // Such a piece is kept when a point inside it lies farther than kWideRegionFactor
 // min_width from its boundary (report->kept_wide); the width and area of what is
 // dropped go to report->dropped_width and dropped_area.
+// `deadline`: checked in the sweep, the split and the sliver tests; throws
+// mesh::DeadlineExceeded once it has passed.
 std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_uv,
                                           LoopRepairReport* report = nullptr,
                                           bool face_reversed = false,
                                           const geom::NurbsSurface* surface = nullptr,
-                                          double min_width = 0.0);
+                                          double min_width = 0.0, mesh::Deadline* deadline = nullptr);
 
 // Signed area in (u,v) of the polygon closed from back() to front()
 // (positive: counter-clockwise).

@@ -74,7 +74,8 @@ std::size_t count_position_open_edges(const mesh::Mesh& mesh) {
     return unpaired_sides(mesh, topology.triangles).size();
 }
 
-std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
+std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance, bool* degenerate) {
+    if (degenerate) *degenerate = false;
     if (!(tolerance > 0.0) || mesh.positions.empty()) return 0;
     const std::vector<std::int32_t> group = position_groups(mesh);
     mesh::Mesh topology;
@@ -99,7 +100,12 @@ std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance) {
         std::int32_t a, b;
     };
     std::vector<Pair> pairs;
+    const std::size_t max_pairs = kMaxSnapPairsPerEnd * ends.size();
     for (std::int32_t g : ends) {
+        if (pairs.size() > max_pairs) {
+            if (degenerate) *degenerate = true;
+            return 0;
+        }
         const GridCell k = key(mesh.positions[g]);
         for (long long dx = -1; dx <= 1; ++dx)
             for (long long dy = -1; dy <= 1; ++dy)

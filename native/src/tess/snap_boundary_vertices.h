@@ -33,6 +33,11 @@ std::size_t count_position_open_edges(const mesh::Mesh& mesh);
 // pairs are joined closest first, each cluster's position is that of its
 // lexicographically smallest member, so the result does not depend on vertex
 // numbering. Returns the number of vertices moved.
-std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance);
+// A boundary with more than kMaxSnapPairsPerEnd candidate pairs per open-edge vertex
+// is degenerate (a self-crossing trim loop's crossings piled within the tolerance):
+// nothing is snapped and *degenerate (if given) is set; the pairs would grow with the
+// square of the pile, in time and memory.
+constexpr std::size_t kMaxSnapPairsPerEnd = 64;
+std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance, bool* degenerate = nullptr);
 
 }  // namespace trimkit::tess

@@ -40,7 +40,8 @@ double signed_area(const TrimPolygon& loop) {
 std::string prefix(int face_id) { return "face " + std::to_string(face_id) + ": "; }
 
 mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& input,
-                      const TessellationOptions& options, int face_id, FaceTimings& timings) {
+                      const TessellationOptions& options, int face_id, FaceTimings& timings,
+                      mesh::Deadline* deadline) {
     // Loops: finite, at least 3 points, oriented as their flag says.
     std::vector<TrimPolygon> loops;
     Eigen::AlignedBox2d box;
@@ -73,11 +74,11 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     const std::optional<RevolutionShape> shape = revolution_shape(face.surface, face.surface_kind);
     const CellGrid grid =
         kd_subdivision(face.surface, box, interior_tolerance(options), surface_tolerance(options),
-                       options.tolerance, loops, options.mode, shape ? &*shape : nullptr);
+                       options.tolerance, loops, options.mode, shape ? &*shape : nullptr, deadline);
     timings.surface += seconds_since(start);
 
     start = Clock::now();
-    const TrimmedCells trimmed = trim_cells(grid, loops);
+    const TrimmedCells trimmed = trim_cells(grid, loops, deadline);
     timings.trim += seconds_since(start);
 
     start = Clock::now();
@@ -85,7 +86,8 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     for (size_t i = 0; i < uv.size(); ++i) uv[i] = trimmed.vertices[i].uv;
     std::vector<std::array<int, 3>> triangles;
     for (const CellPolygon& polygon : trimmed.polygons) {
-        const auto cell_triangles = triangulate_polygon(uv, polygon.outer, polygon.holes);
+        mesh::check_deadline(deadline, "triangulation");
+        const auto cell_triangles = triangulate_polygon(uv, polygon.outer, polygon.holes, deadline);
         triangles.insert(triangles.end(), cell_triangles.begin(), cell_triangles.end());
     }
 
@@ -110,6 +112,7 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     mesh.normals.resize(used.size());
     mesh.uvs.resize(used.size());
     for (size_t k = 0; k < used.size(); ++k) {
+        mesh::check_deadline(deadline, "evaluation");
         const TrimmedVertex& vertex = trimmed.vertices[used[k]];
         Eigen::Vector3d S, Su, Sv;
         evaluator.evaluate(vertex.uv.x(), vertex.uv.y(), S, Su, Sv);
@@ -144,11 +147,11 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
 
 mesh::Mesh tessellate_face(const geom::Face& face, const std::vector<TrimPolygon>& loops,
                            const TessellationOptions& options, int face_id,
-                           FaceTimings* timings) {
+                           FaceTimings* timings, mesh::Deadline* deadline) {
     validate(options);
     FaceTimings local;
     try {
-        return tessellate(face, loops, options, face_id, timings ? *timings : local);
+        return tessellate(face, loops, options, face_id, timings ? *timings : local, deadline);
     } catch (const geom::NumericalFailure& e) {
         const std::string what = e.what();
         if (what.rfind(prefix(face_id), 0) == 0) throw;

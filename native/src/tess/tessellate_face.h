@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geom/face.h"
+#include "mesh/deadline.h"
 #include "mesh/mesh.h"
 #include "tess/tessellation_options.h"
 #include "tess/trim_polyline.h"
@@ -34,8 +35,11 @@ struct FaceTimings {
 // (revolution_error.h), which is what DESIGN.md guarantees and `trimkit check` measures.
 // Throws geom::InvalidInput for invalid options or non-finite loop points, and
 // geom::NumericalFailure naming the face on degenerate data; never returns NaNs.
+// `deadline` (the caller's: tessellate_model gives each face options.face_timeout) is
+// checked in the kd subdivision, trimming, triangulation and evaluation loops; once it
+// has passed, mesh::DeadlineExceeded is thrown (options.face_timeout is not read here).
 mesh::Mesh tessellate_face(const geom::Face& face, const std::vector<TrimPolygon>& loops,
                            const TessellationOptions& options, int face_id,
-                           FaceTimings* timings = nullptr);
+                           FaceTimings* timings = nullptr, mesh::Deadline* deadline = nullptr);
 
 }  // namespace trimkit::tess

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <numeric>
 #include <optional>
 #include <thread>
@@ -11,6 +12,7 @@
 
 #include "geom/error.h"
 #include "geom/flatten_instances.h"
+#include "mesh/deadline.h"
 #include "mesh/open_edges.h"
 #include "mesh/weld_vertices.h"
 #include "tess/approximate_trim_curve.h"
@@ -109,6 +111,8 @@ struct FaceOutput {
     double verify_seconds = 0.0;
     double trim_loss = 0.0;  // area the trim chords lose (trim_area_loss)
     double cell_loss = 0.0;  // area the triangles lose inside the trims (cell_area_loss)
+    bool timed_out = false;  // stopped by options.face_timeout (error says where)
+    double seconds = 0.0;    // wall time of all the face's attempts
 };
 
 // Phase 1's shared edges, for the faces.
@@ -152,6 +156,42 @@ struct FaceAttempt {
     bool own_shared_edges = false;
     double sliver_share = kSliverWidthShare;
     std::string name;  // for the report: "with yang trims"
+};
+
+bool cancelled(const TessellationOptions& options) {
+    return options.cancel && options.cancel->load(std::memory_order_relaxed);
+}
+
+// options.progress as faces are done: one call at a time, the fraction rising.
+class FaceProgress {
+public:
+    FaceProgress(std::function<void(double)> report, int faces) : report_(std::move(report)), faces_(faces) {}
+    // Marks one face done when it goes out of scope (however the face ends).
+    class Done {
+    public:
+        explicit Done(FaceProgress& p) : p_(p) {}
+        ~Done() { p_.face_done(); }
+        Done(const Done&) = delete;
+        Done& operator=(const Done&) = delete;
+
+    private:
+        FaceProgress& p_;
+    };
+
+private:
+    void face_done() {
+        if (!report_) return;
+        const std::lock_guard<std::mutex> lock(mutex_);
+        try {
+            report_(static_cast<double>(++done_) / faces_);
+        } catch (...) {
+            report_ = nullptr;  // a failing reporter is dropped; the tessellation goes on
+        }
+    }
+    std::function<void(double)> report_;
+    int faces_;
+    int done_ = 0;
+    std::mutex mutex_;
 };
 
 FaceAttempt first_attempt(const TessellationOptions& options) {
@@ -279,10 +319,38 @@ void unify_edge_ends(const geom::Model& model, std::vector<std::vector<Eigen::Ve
     }
 }
 
+// Snaps open-boundary vertices within weld_tol, closes T-junctions, fills sliver holes
+// up to sliver_width. On a degenerate boundary (snap_boundary_vertices.h,
+// close_t_junctions.h: piled-up vertices, whose joining grows with the square of the
+// pile) the stage that meets it stops, the hole filling (a shortest-cycle search per
+// open side) is skipped, and a warning says so.
+void join_faces(mesh::Mesh& m, double weld_tol, double sliver_width, std::vector<std::string>& warnings) {
+    bool piled = false, crowded = false;
+    snap_boundary_vertices(m, weld_tol, &piled);
+    if (piled)
+        warnings.push_back("joining the faces: more than " + std::to_string(kMaxSnapPairsPerEnd) +
+                           " open-edge vertices per open-edge vertex lie within the weld tolerance (a degenerate "
+                           "boundary); the faces were not snapped together");
+    close_t_junctions(m, weld_tol, &crowded);
+    if (crowded)
+        warnings.push_back("joining the faces: more than " + std::to_string(kMaxJunctionTestsPerSide) +
+                           " boundary vertices per open edge lie near the open edges (a degenerate boundary); "
+                           "T-junctions were closed only in part");
+    if (piled || crowded)
+        warnings.push_back("joining the faces: sliver holes not filled (degenerate boundary)");
+    else
+        fill_sliver_holes(m, sliver_width, kSliverHoleSides);
+}
+
 FailedFace failed_face(int f, const FaceOutput& out) {
     FailedFace failed;
     failed.face = f;
     failed.reason = out.error;
+    failed.seconds = out.seconds;
+    if (out.timed_out) {
+        failed.defect = "timeout";
+        return failed;
+    }
     if (!out.verification || out.verification->passed()) return failed;
     const FaceVerification& v = *out.verification;
     switch (v.defect) {
@@ -310,8 +378,11 @@ int boundary_edge_count(const mesh::Mesh& mesh) {
 // (an exception, no triangles, a rejected mesh) is out.error, naming the face.
 // trim_scale, cell_scale: the shares of their tolerance the face's own trims and its
 // cells get (area_budget.h).
+// deadline: the face's (options.face_timeout, over all its attempts); once it has
+// passed, the attempt stops with out.timed_out set.
 FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions& options, double trim_scale,
-                     double cell_scale, const SharedEdges& edges, const FaceAttempt& attempt) {
+                     double cell_scale, const SharedEdges& edges, const FaceAttempt& attempt,
+                     mesh::Deadline& deadline) {
     const double trim_tol = trim_scale * trim_tolerance(options);
     const geom::Face& face = model.faces[f];
     FaceOutput out;
@@ -323,6 +394,7 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
             const geom::Loop& loop = face.loops[l];
             std::vector<TrimPolyline> polylines;
             for (size_t c = 0; c < loop.coedges.size(); ++c) {
+                deadline.check_now("trim curve approximation");
                 const geom::Coedge& coedge = loop.coedges[c];
                 const int e = coedge.edge;
                 const bool has_edge = !attempt.own_shared_edges && e >= 0 &&
@@ -340,7 +412,8 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
                                                "far off this face, and the mesh follows the edge)");
                     polylines.push_back(std::move(mapped.polyline));
                 } else {
-                    polylines.push_back(approximate_trim_curve(face.surface, coedge.curve, trim_tol, attempt.method));
+                    polylines.push_back(
+                        approximate_trim_curve(face.surface, coedge.curve, trim_tol, attempt.method, &deadline));
                     polylines.back().edge = e;
                     drop_duplicate_points(polylines.back(), kDuplicatePointShare * options.tolerance);
                 }
@@ -351,7 +424,7 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
             for (size_t c = 0; c < polylines.size(); ++c)
                 out.trim_loss += trim_area_loss(face.surface, loop.coedges[c].curve, polylines[c], region_left);
             for (TrimPolygon& p : repair_trim_loop(joined, snap_uv, &report, face.reversed, &face.surface,
-                                                   attempt.sliver_share * options.tolerance))
+                                                   attempt.sliver_share * options.tolerance, &deadline))
                 polygons.push_back(std::move(p));
             if (report.changed())
                 out.warnings.push_back("face " + std::to_string(f) + ": trim loop " + std::to_string(l) +
@@ -363,7 +436,8 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
         TessellationOptions face_options = options;
         face_options.trim_method = attempt.method;
         face_options.tolerance = cell_scale * options.tolerance;
-        out.mesh = tessellate_face(face, polygons, face_options, f, &out.timings);
+        out.mesh = tessellate_face(face, polygons, face_options, f, &out.timings, &deadline);
+        deadline.check_now("welding the face");
         // Near-duplicates within the face (a grid crossing 1e-13 from a trim
         // point) become one vertex, dropping the zero-area slivers between them;
         // a seam's or a pole's vertices (same position, uvs far apart) stay
@@ -378,11 +452,16 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
             return out;
         }
         const auto verify_start = Clock::now();
+        deadline.check_now("verification");
         out.verification = verify_face(face, out.mesh, polygons, options.tolerance, f);
         out.verify_seconds = seconds_since(verify_start);
+        deadline.check_now("verification");
         if (!out.verification->passed()) out.error = out.verification->reason;
         else if (face.surface_kind != "plane") out.cell_loss = cell_area_loss(face.surface, out.mesh);
 
+    } catch (const mesh::DeadlineExceeded& e) {
+        out.error = "face " + std::to_string(f) + ": timeout: " + e.what();
+        out.timed_out = true;
     } catch (const geom::NumericalFailure& e) {
         out.error = e.what();
     } catch (const geom::InvalidInput& e) {
@@ -464,8 +543,11 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
             return;
         }
         try {
+            // Its own limit (each face has its own too): an edge over it is left to its faces,
+            // which then stop at theirs and report it.
+            mesh::Deadline deadline(options.face_timeout, options.cancel);
             TrimPolyline polyline = approximate_trim_curve(face.surface, coedge.curve, scale * trim_tolerance(options),
-                                                           options.trim_method);
+                                                           options.trim_method, &deadline);
             polyline.edge = e;
             edge_points[e] = edge_points_from(polyline, coedge.edge_reversed);
             edge_polyline[e] = std::move(polyline);
@@ -504,17 +586,27 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     start = Clock::now();
     const SharedEdges edges{first, edge_polyline, edge_points};
     std::vector<FaceOutput> outputs(model.faces.size());
+    FaceProgress progress(has_previous ? std::function<void(double)>() : options.progress,
+                          static_cast<int>(model.faces.size()));
     parallel_for(static_cast<int>(model.faces.size()), threads, [&](int f) {
+        const FaceProgress::Done done(progress);
         FaceOutput& out = outputs[f];
+        if (cancelled(options)) {
+            out.error = "face " + std::to_string(f) + ": cancelled";
+            return;
+        }
         if (unchanged(f)) {
             out = std::move(previous.outputs[f]);
             out.timings = FaceTimings{};
             out.trim_seconds = out.verify_seconds = 0.0;
             return;
         }
-        out = mesh_face(model, f, options, trim_scale[f], scales.cell[f], edges, first_attempt(options));
-        if (out.error.empty()) return;
-        FaceOutput retry = mesh_face(model, f, options, trim_scale[f], scales.cell[f], edges, second_attempt(options));
+        mesh::Deadline deadline(options.face_timeout, options.cancel);
+        out = mesh_face(model, f, options, trim_scale[f], scales.cell[f], edges, first_attempt(options), deadline);
+        out.seconds = deadline.elapsed();
+        if (out.error.empty() || out.timed_out) return;
+        FaceOutput retry =
+            mesh_face(model, f, options, trim_scale[f], scales.cell[f], edges, second_attempt(options), deadline);
         const double trim_seconds = out.trim_seconds + retry.trim_seconds;
         const double verify_seconds = out.verify_seconds + retry.verify_seconds;
         FaceTimings timings = retry.timings;
@@ -531,8 +623,11 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
         out.trim_seconds = trim_seconds;
         out.verify_seconds = verify_seconds;
         out.timings = timings;
+        out.timed_out = retry.timed_out;
+        out.seconds = deadline.elapsed();
     });
     const double face_wall = seconds_since(start);
+    if (cancelled(options)) throw TessellationCancelled("tessellate_model: cancelled");
 
     // Gather in face order.
     double trim_sum = 0.0, surface_sum = 0.0, triangulate_sum = 0.0, verify_sum = 0.0;
@@ -574,9 +669,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     start = Clock::now();
     mesh::Mesh& m = result.mesh;
     if (m.vertex_count() > 0) {
-        snap_boundary_vertices(m, weld_distance);
-        close_t_junctions(m, weld_distance);
-        fill_sliver_holes(m, least_scale * trim_tolerance(options), kSliverHoleSides);
+        join_faces(m, weld_distance, least_scale * trim_tolerance(options), result.warnings);
         flag_edges(m, options.angle);
         result.open_edges = count_position_open_edges(m);
     }
@@ -611,7 +704,7 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
     const double first_worst = worst;
     FaceScales next = scale;
     std::vector<char> tightened(groups.size(), 0);
-    for (int round = 0; round < kAreaRounds && worst > kAreaShare; ++round) {
+    for (int round = 0; round < kAreaRounds && worst > kAreaShare && !cancelled(options); ++round) {
         const std::vector<int> over =
             tighten_to_area_budget(groups, areas, kAreaShare, kAreaMargin, kMinFaceScale, next);
         if (over.empty()) break;

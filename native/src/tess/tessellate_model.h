@@ -11,6 +11,7 @@
 #pragma once
 
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -22,12 +23,13 @@ namespace trimkit::tess {
 
 // A face left out of the mesh. When its mesh was made but rejected by verify_face
 // (after the retry), `defect` says which check failed and the figures are the first
-// attempt's (verify_face.h); otherwise (an exception, no triangles) `defect` is
-// "error" and the figures are NaN.
+// attempt's (verify_face.h); a face stopped by TessellationOptions::face_timeout has
+// defect "timeout" (reason: where it stopped, after how long) and NaN area figures;
+// otherwise (an exception, no triangles) `defect` is "error" and the figures are NaN.
 struct FailedFace {
     int face = -1;       // Model::faces index
     std::string reason;  // "face 12: mesh area 1.504x the exact trimmed area (...)"
-    std::string defect = "error";  // "area", "trim_loop", "boundary", "no_boundary" or "error"
+    std::string defect = "error";  // "area", "trim_loop", "boundary", "no_boundary", "timeout" or "error"
     double area_mesh = std::numeric_limits<double>::quiet_NaN();
     double area_exact = std::numeric_limits<double>::quiet_NaN();
     double area_bound = std::numeric_limits<double>::quiet_NaN();  // allowed |area_mesh - area_exact|
@@ -35,6 +37,7 @@ struct FailedFace {
     // ways), and the distance allowed.
     double boundary_gap = std::numeric_limits<double>::quiet_NaN();
     double boundary_bound = std::numeric_limits<double>::quiet_NaN();
+    double seconds = 0.0;  // wall time spent on the face (all its attempts)
 };
 
 // Seconds per stage. Per-face stages run in parallel: their shares of the parallel
@@ -45,6 +48,12 @@ struct TessellationTimings {
     double triangulate = 0.0;  // triangulation and evaluation
     double weld = 0.0;         // welding, T-junctions, edge flags, open edge count
     double verify = 0.0;       // verify_face on each face's mesh (and on its retry)
+};
+
+// Thrown by tessellate_model when options.cancel was set: nothing is returned.
+class TessellationCancelled : public std::runtime_error {
+public:
+    explicit TessellationCancelled(const std::string& what) : std::runtime_error(what) {}
 };
 
 struct TessellationResult {
@@ -58,9 +67,10 @@ struct TessellationResult {
     std::vector<std::string> warnings;  // per-face repairs and edge gaps
 };
 
-// Meshes every face of `model`. Throws geom::InvalidInput for invalid options;
-// per-face NumericalFailure / InvalidInput and rejected meshes go to failed_faces
-// (their triangles are not in the mesh).
+// Meshes every face of `model`. Throws geom::InvalidInput for invalid options and
+// TessellationCancelled once options.cancel is set; per-face NumericalFailure /
+// InvalidInput, rejected meshes and faces over options.face_timeout go to
+// failed_faces (their triangles are not in the mesh).
 TessellationResult tessellate_model(const geom::Model& model, const TessellationOptions& options);
 
 // Diagonal of the tight bounding box of the trimmed faces, from points on them

@@ -18,6 +18,9 @@ void validate(const TessellationOptions& options) {
     if (options.threads < 0)
         throw geom::InvalidInput("TessellationOptions: threads = " +
                                  std::to_string(options.threads) + "; expected >= 0 (0 = all cores)");
+    if (!(options.face_timeout >= 0.0))
+        throw geom::InvalidInput("TessellationOptions: face_timeout = " + format_value(options.face_timeout) +
+                                 "; expected seconds >= 0 (0 = no limit)");
 }
 
 }  // namespace trimkit::tess

@@ -2,8 +2,12 @@
 // `tolerance` is absolute, in model units: every mesh point lies within it of the
 // exact trimmed surface (mode kGuaranteed). Near the trim boundary it is shared
 // between the trim curves and the surface (kTrimToleranceShare), because a triangle
-// touching the trim boundary carries both errors. `angle` is in radians.
+// touching the trim boundary carries both errors. `angle` is in radians;
+// `face_timeout` in seconds of wall time.
 #pragma once
+
+#include <atomic>
+#include <functional>
 
 #include "tess/trim_polyline.h"
 
@@ -14,12 +18,28 @@ enum class ErrorMode {
     kApproximate,  // the same bound with surface samples instead of control points
 };
 
+// Default TessellationOptions::face_timeout, seconds: whole shared CAD files mesh in
+// about a second (Motor-c.brep 0.4 s on one thread); a hostile face (a star-shaped trim
+// loop crossing itself 720 000 times spends 14 s in its loop repair alone, bench/FUZZ.md)
+// grows with the square of its crossings.
+constexpr double kDefaultFaceTimeout = 30.0;
+
 struct TessellationOptions {
     double tolerance = 0.01;          // absolute, model units; > 0 and finite
     double angle = 0.5235987755982988;  // 30 degrees: sharp-edge flag threshold, radians
     ErrorMode mode = ErrorMode::kGuaranteed;
     TrimMethod trim_method = TrimMethod::kBezier3d;
     int threads = 0;                  // 0 = all cores
+    // Wall time one face may take (all its attempts: trims, loop repair, kd-tree,
+    // trimming, triangulation, verification); a face that takes longer is stopped at
+    // the next check and reported in failed_faces with defect "timeout". 0 = no limit.
+    double face_timeout = kDefaultFaceTimeout;
+    // Set from any thread to stop the tessellation: faces stop at their next check and
+    // tessellate_model throws TessellationCancelled. nullptr: not cancellable.
+    const std::atomic<bool>* cancel = nullptr;
+    // Called with the fraction of the model's faces meshed (first pass), from the
+    // worker threads one at a time; empty: none.
+    std::function<void(double)> progress{};
 };
 
 // How the tolerance T is shared (kGuaranteed). A triangle's point at barycentric
@@ -48,7 +68,7 @@ constexpr double kWeldShare = 0.1;
 constexpr double kInteriorToleranceShare = 0.8;
 
 // Throws geom::InvalidInput naming the field unless tolerance > 0 and finite,
-// angle in [0, pi] and threads >= 0.
+// angle in [0, pi], threads >= 0 and face_timeout >= 0 (not NaN).
 void validate(const TessellationOptions& options);
 
 // The tolerance tessellate_model meshes each face to.

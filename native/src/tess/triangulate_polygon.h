@@ -10,6 +10,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "mesh/deadline.h"
+
 namespace trimkit::tess {
 
 // Convex polygons without holes: ear clipping without containment tests (linear
@@ -20,9 +22,12 @@ namespace trimkit::tess {
 // until they are ears, and when no proper ear remains, a degenerate (zero-area)
 // triangle is emitted rather than a vertex dropped, so the mesh has no gaps.
 // Consecutive duplicate indices are removed first; fewer than 3 vertices give none.
+// deadline: checked while clipping ears (quadratic in the ring's length; a cell or a
+// repaired trim loop piece can have 10^5 vertices); throws mesh::DeadlineExceeded.
 std::vector<std::array<int, 3>> triangulate_polygon(const std::vector<Eigen::Vector2d>& uv,
                                                     const std::vector<int>& outer,
-                                                    const std::vector<std::vector<int>>& holes = {});
+                                                    const std::vector<std::vector<int>>& holes = {},
+                                                    mesh::Deadline* deadline = nullptr);
 
 // True if the ring turns left or goes straight at every vertex.
 bool is_convex(const std::vector<Eigen::Vector2d>& uv, const std::vector<int>& ring);

@@ -210,7 +210,7 @@ struct SegmentEvents {
 
 }  // namespace
 
-TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& loops) {
+TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& loops, mesh::Deadline* deadline) {
     // Flatten the segments: segment (loop l, index i) runs from point i to i+1 (cyclic).
     std::vector<int> offset(loops.size() + 1, 0);
     for (size_t l = 0; l < loops.size(); ++l)
@@ -250,8 +250,10 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
         candidates.clear();
         for (int i = buckets.column(cell.u0); i <= buckets.column(cell.u1); ++i)
             for (int j = buckets.row(cell.v0); j <= buckets.row(cell.v1); ++j)
-                for (int s : buckets.bucket(i, j))
+                for (int s : buckets.bucket(i, j)) {
+                    mesh::check_deadline(deadline, "trimming the cells");
                     if (seen[s] != stamp) seen[s] = stamp, candidates.push_back(s);
+                }
         std::sort(candidates.begin(), candidates.end());
 
         // Crossings with the cell's sides.
@@ -259,6 +261,7 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
         std::vector<int> entries;  // crossing indices that enter the cell
         std::vector<int> touched_loops;
         for (int s : candidates) {
+            mesh::check_deadline(deadline, "trimming the cells");
             const PolylinePoint& a = point(s, 0);
             const PolylinePoint& b = point(s, 1);
             const bool in_a = inside(cell, a.uv), in_b = inside(cell, b.uv);
@@ -305,6 +308,7 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
         std::vector<Piece> pieces;
         std::vector<int> piece_of_entry(crossings.size(), -1);
         for (int s : candidates) {
+            mesh::check_deadline(deadline, "trimming the cells");
             const SegmentEvents* e = events_of(s);
             if (!e || e->entry < 0) continue;
             Piece piece;
@@ -366,6 +370,7 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
                 int best = -1;
                 double best_d = 5.0;
                 for (int x : entries) {
+                    mesh::check_deadline(deadline, "trimming the cells");
                     const int pi = piece_of_entry[x];
                     if (pi < 0) continue;
                     double d = forward(from, crossings[x].position);

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "mesh/deadline.h"
 #include "tess/kd_subdivision.h"
 #include "tess/trim_polyline.h"
 
@@ -44,6 +45,8 @@ struct TrimmedCells {
 // counter-clockwise, holes clockwise, all inside grid.box). Crossing points of a
 // trim segment with a cell side interpolate the segment's (u,v) and xyz linearly,
 // so the face boundary stays on the trim polyline's 3D chords.
-TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& loops);
+// `deadline`: checked per segment a cell tests; throws mesh::DeadlineExceeded.
+TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& loops,
+                        mesh::Deadline* deadline = nullptr);
 
 }  // namespace trimkit::tess
