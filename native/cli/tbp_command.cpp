@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -221,12 +222,16 @@ int run_from_mesh(const std::vector<std::string>& argv) {
     if (scheme != "pn" && scheme != "loop") throw UsageError("option --scheme = " + scheme + "; expected pn or loop");
     const std::string out = output_path(args);
     const mesh::Mesh cage = io::read_mesh(args.positionals()[0]);
+    // The solid is named after its mesh file ("bracket" from bracket.obj), as importers name objects.
+    const std::string name = std::filesystem::path(args.positionals()[0]).stem().string();
     if (scheme == "pn") {
-        const tbp::TbpSolid solid = naming_input(args.positionals()[0], [&] { return tbp::pn_triangles(cage); });
+        tbp::TbpSolid solid = naming_input(args.positionals()[0], [&] { return tbp::pn_triangles(cage); });
+        solid.name = name;
         io::write_tbp(solid, out);
         std::cout << solid.patches.size() << " cubic PN patches -> " << out << "\n";
     } else {
-        const tbp::LoopConversion c = naming_input(args.positionals()[0], [&] { return tbp::loop_quartics(cage); });
+        tbp::LoopConversion c = naming_input(args.positionals()[0], [&] { return tbp::loop_quartics(cage); });
+        c.solid.name = name;
         io::write_tbp(c.solid, out);
         std::printf("%zu quartic Loop patches -> %s; %d irregular patches approximated, max error %.6g\n",
                     c.solid.patches.size(), out.c_str(), c.approximated, c.max_error);

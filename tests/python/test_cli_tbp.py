@@ -90,6 +90,7 @@ def test_from_mesh_pn_and_loop(tmp_path):
         assert result.returncode == 0, result.stderr
         solid = json.loads(out.read_text())
         assert solid["degree"] == degree and len(solid["patches"]) == 20
+        assert solid["name"] == "ico"  # named after the mesh file, not after the scheme
         assert run("tbp", "inside", str(out), "0", "0", "0").stdout.strip() == "inside"
 
 
