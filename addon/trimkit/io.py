@@ -6,6 +6,7 @@ of the model's diagonal when `relative`) and returns positions multiplied by
 k of triangle t is row 3t + k.
 """
 import dataclasses
+import math
 import pathlib
 import tempfile
 import time
@@ -679,8 +680,13 @@ def empty_part(name):
                     materials=[material_name(None)], material_index=np.zeros(0, np.int32))
 
 
-def mesh_to_tbp(positions, triangles, name=""):
-    """Cubic PN-triangle TbpSolid of a closed, outward-oriented triangle mesh; ValueError
+# Mesh to TBP: sides whose faces meet at more than this (radians) stay creases.
+TBP_SHARP_ANGLE = math.radians(30.0)
+
+
+def mesh_to_tbp(positions, triangles, name="", sharp_angle=TBP_SHARP_ANGLE):
+    """Cubic PN-triangle TbpSolid of a closed, outward-oriented triangle mesh, sides
+    meeting at more than `sharp_angle` kept as creases (a cube stays a cube); ValueError
     if the mesh has no triangles or open edges (it must bound a solid)."""
     positions = np.asarray(positions, np.float64).reshape(-1, 3)
     triangles = np.asarray(triangles, np.int32).reshape(-1, 3)
@@ -692,6 +698,6 @@ def mesh_to_tbp(positions, triangles, name=""):
     open_edges = open_edge_count(welded)
     if open_edges:
         raise ValueError(f"the mesh is not closed ({open_edges} open edges): a TBP solid needs a closed mesh")
-    solid = native().pn_triangles(mesh)
+    solid = native().pn_triangles(mesh, sharp_angle)
     solid.name = name
     return solid

@@ -391,6 +391,9 @@ class OBJECT_OT_trimkit_mesh_to_tbp(bpy.types.Operator):
     bl_options = {'REGISTER', 'UNDO'}
     levels: levels_property(1)
     lod: lod_property(1)
+    sharp_angle: FloatProperty(name="Sharp Angle", default=io.TBP_SHARP_ANGLE, min=0.0, max=math.pi, subtype='ANGLE',
+                               description="Sides whose faces meet at more than this stay sharp creases of the solid "
+                                           "(a cube stays a cube); 180 degrees smooths every side")
 
     @classmethod
     def poll(cls, context):
@@ -402,7 +405,7 @@ class OBJECT_OT_trimkit_mesh_to_tbp(bpy.types.Operator):
 
         def work(progress):
             progress(0.1)
-            return tbp_objects.mesh_to_tbp(context, source, self.levels, self.lod)
+            return tbp_objects.mesh_to_tbp(context, source, self.levels, self.lod, self.sharp_angle)
         done = run_with_progress(self, context, work)
         if done is None:
             return {'CANCELLED'}

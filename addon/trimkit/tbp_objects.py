@@ -93,17 +93,19 @@ def mesh_arrays(context, obj):
     return positions.reshape(-1, 3), triangles.reshape(-1, 3)
 
 
-def mesh_to_tbp(context, obj, levels, lod):
-    """A new TBP object (cubic PN triangles) from a closed mesh object, with its transform."""
+def mesh_to_tbp(context, obj, levels, lod, sharp_angle=io.TBP_SHARP_ANGLE):
+    """A new TBP object (cubic PN triangles, creases above `sharp_angle` kept) from a
+    closed mesh object, with its transform; the source mesh is hidden."""
     positions, triangles = mesh_arrays(context, obj)
     name = f"{obj.name} TBP"
-    solid = io.mesh_to_tbp(positions, triangles, name)
+    solid = io.mesh_to_tbp(positions, triangles, name, sharp_angle)
     meshing = io.tbp_mesh(solid, levels, lod, name=name)
     file_name = f"{name}.tbp"
     text = stored_source.store(file_name, io.tbp_bytes(solid))
     new = link_new(context, name, meshing.part, obj.matrix_world.copy())
     set_tbp_props(new, text, file_name, levels, lod)
     record(new.trimkit, meshing.patches, meshing.triangles, meshing.seconds)
+    obj.hide_set(True)
     return new, meshing
 
 

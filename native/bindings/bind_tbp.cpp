@@ -233,8 +233,10 @@ void bind_tbp(py::module_& m) {
           "Every patch of `target` trimmed against the closed solid `tool`: (welded Mesh with face id = "
           "patch index, [TrimResult per patch]).");
 
-    m.def("pn_triangles", &tbp::pn_triangles, py::arg("mesh"), py::call_guard<py::gil_scoped_release>(),
-          "Cubic PN-triangle solid of a closed triangle mesh (welded first); ValueError for an invalid mesh.");
+    m.def("pn_triangles", &tbp::pn_triangles, py::arg("mesh"), py::arg("sharp_angle") = tbp::kNoSharpEdges,
+          py::call_guard<py::gil_scoped_release>(),
+          "Cubic PN-triangle solid of a closed triangle mesh (welded first); sides whose triangles meet at more "
+          "than sharp_angle (radians) stay creases; ValueError for an invalid mesh.");
     py::class_<tbp::LoopConversion>(m, "LoopConversion")
         .def_readonly("solid", &tbp::LoopConversion::solid)
         .def_readonly("approximated", &tbp::LoopConversion::approximated)

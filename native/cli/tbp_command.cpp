@@ -44,7 +44,7 @@ const char* const kTbpUsage =
     "       trimkit tbp intersect A.tbp B.tbp [--levels L] [--lod K] [--json] [--no-hierarchy]\n"
     "       trimkit tbp trim TARGET.tbp TOOL.tbp --keep outside|inside -o OUT [--levels L] [--lod K] [--json]\n"
     "       trimkit tbp inside SOLID.tbp X Y Z | --points FILE [--levels L] [--lod K]\n"
-    "       trimkit tbp from-mesh IN.obj -o OUT.tbp [--scheme pn|loop]";
+    "       trimkit tbp from-mesh IN.obj -o OUT.tbp [--scheme pn|loop] [--sharp-angle DEG]";
 
 int count_option(const Arguments& args, const std::string& name, int fallback, int minimum, int maximum) {
     const double x = args.number(name, fallback);
@@ -215,17 +215,25 @@ int run_inside(const std::vector<std::string>& argv) {
     return 0;
 }
 
+// tbp from-mesh's default crease angle, as Blender's auto smooth.
+constexpr double kSharpAngleDegrees = 30.0;
+
 int run_from_mesh(const std::vector<std::string>& argv) {
-    const Arguments args(argv, {}, {"--output", "--scheme"});
+    const Arguments args(argv, {}, {"--output", "--scheme", "--sharp-angle"});
     args.expect_positionals(1, kTbpUsage);
     const std::string scheme = args.value("--scheme", "pn");
+    // pn: sides whose faces meet at more than this stay creases (a cube stays a cube).
+    const double sharp_degrees = args.number("--sharp-angle", kSharpAngleDegrees);
+    if (!(sharp_degrees >= 0.0 && sharp_degrees <= 180.0))
+        throw UsageError("option --sharp-angle = " + geom::format_value(sharp_degrees) + "; expected 0 to 180 degrees");
     if (scheme != "pn" && scheme != "loop") throw UsageError("option --scheme = " + scheme + "; expected pn or loop");
     const std::string out = output_path(args);
     const mesh::Mesh cage = io::read_mesh(args.positionals()[0]);
     // The solid is named after its mesh file ("bracket" from bracket.obj), as importers name objects.
     const std::string name = std::filesystem::path(args.positionals()[0]).stem().string();
     if (scheme == "pn") {
-        tbp::TbpSolid solid = naming_input(args.positionals()[0], [&] { return tbp::pn_triangles(cage); });
+        const double sharp = sharp_degrees >= 180.0 ? tbp::kNoSharpEdges : sharp_degrees * M_PI / 180.0;
+        tbp::TbpSolid solid = naming_input(args.positionals()[0], [&] { return tbp::pn_triangles(cage, sharp); });
         solid.name = name;
         io::write_tbp(solid, out);
         std::cout << solid.patches.size() << " cubic PN patches -> " << out << "\n";

@@ -797,6 +797,29 @@ def test_tbp_uv_sphere_to_tbp_trims_a_square():
           f"{seconds:.2f} s")
 
 
+def test_tbp_cube_stays_a_cube_and_its_source_is_hidden():
+    empty_scene()
+    bpy.ops.mesh.primitive_cube_add(size=2.0)
+    cube = bpy.context.active_object
+    assert bpy.ops.object.trimkit_mesh_to_tbp(levels=1, lod=1) == {'FINISHED'}
+    solid = bpy.context.active_object
+    assert solid != cube and solid.trimkit.kind == 'TBP' and solid.trimkit.faces == 12
+    assert cube.hide_get() and not solid.hide_get()
+    assert solid.name == "Cube TBP"
+    mesh = solid.data
+    volume = sum(mesh.vertices[p.vertices[0]].co.dot(mesh.vertices[p.vertices[1]].co.cross(mesh.vertices[p.vertices[2]].co))
+                 for p in mesh.polygons) / 6.0
+    assert abs(volume - 8.0) < 0.01 * 8.0, volume  # sides at 90 degrees stay creases (default 30 degrees)
+    empty_scene()
+    bpy.ops.mesh.primitive_cube_add(size=2.0)
+    assert bpy.ops.object.trimkit_mesh_to_tbp(levels=1, lod=1, sharp_angle=math.pi) == {'FINISHED'}
+    mesh = bpy.context.active_object.data
+    smooth = sum(mesh.vertices[p.vertices[0]].co.dot(mesh.vertices[p.vertices[1]].co.cross(mesh.vertices[p.vertices[2]].co))
+                 for p in mesh.polygons) / 6.0
+    assert smooth > 1.1 * 8.0, smooth  # every side smoothed: the cube bulges
+    print(f"    Mesh to TBP of a cube: volume {volume:.6f} (8 exact); smoothed {smooth:.4f}")
+
+
 def test_tbp_errors_cancel_and_leave_the_scene_unchanged():
     empty_scene()
     bpy.ops.mesh.primitive_plane_add()

@@ -92,6 +92,16 @@ def test_from_mesh_pn_and_loop(tmp_path):
         assert solid["degree"] == degree and len(solid["patches"]) == 20
         assert solid["name"] == "ico"  # named after the mesh file, not after the scheme
         assert run("tbp", "inside", str(out), "0", "0", "0").stdout.strip() == "inside"
+    # The icosahedron's faces meet at 41.8 degrees: creases at the default 30, smooth at 45.
+    def bulge(path):
+        patches = json.loads(path.read_text())["patches"]
+        return max(abs(sum(x * x for x in p[4]) ** 0.5) for p in patches)  # centre control point's radius
+    for angle, out in (("30", "flat.tbp"), ("45", "round.tbp")):
+        assert run("tbp", "from-mesh", str(obj), "-o", str(tmp_path / out), "--sharp-angle", angle).returncode == 0
+    corner = (1 + t * t) ** 0.5  # the vertices' radius
+    assert bulge(tmp_path / "flat.tbp") < corner * 0.8  # face centres sit inside, on the flat faces
+    assert bulge(tmp_path / "round.tbp") > bulge(tmp_path / "flat.tbp") * 1.1
+    assert run("tbp", "from-mesh", str(obj), "-o", str(tmp_path / "x.tbp"), "--sharp-angle", "-1").returncode == 2
 
 
 def test_bad_tbp_names_file_and_line(tmp_path):

@@ -1,6 +1,10 @@
 #include "tbp/from_mesh.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -37,44 +41,109 @@ mesh::Mesh welded_cage(const mesh::Mesh& input, const char* what) {
 
 }  // namespace
 
-TbpSolid pn_triangles(const mesh::Mesh& input) {
-    const mesh::Mesh m = welded_cage(input, "pn_triangles");
+namespace {
 
-    // Angle-weighted vertex normals.
-    std::vector<Eigen::Vector3d> N(m.positions.size(), Eigen::Vector3d::Zero());
-    for (const auto& t : m.triangles) {
-        const Eigen::Vector3d n = (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]);
-        if (n.norm() == 0) continue;
-        for (int c = 0; c < 3; ++c) {
-            const Eigen::Vector3d e1 = m.positions[t[(c + 1) % 3]] - m.positions[t[c]];
-            const Eigen::Vector3d e2 = m.positions[t[(c + 2) % 3]] - m.positions[t[c]];
-            const double angle = std::atan2(e1.cross(e2).norm(), e1.dot(e2));
-            N[t[c]] += angle * n.normalized();
-        }
+// Union-find over triangle corners (3 t + c).
+struct Corners {
+    std::vector<int> parent;
+    explicit Corners(std::size_t n) : parent(n) {
+        for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<int>(i);
     }
-    for (std::size_t v = 0; v < N.size(); ++v) {
-        if (N[v].norm() == 0) {
-            bool used = false;
-            for (const auto& t : m.triangles) used |= t[0] == int(v) || t[1] == int(v) || t[2] == int(v);
-            if (used)
-                // Bad input, not our failure: the mesh folds back on itself at v.
-                throw geom::InvalidInput("pn_triangles: vertex " + std::to_string(v) +
-                                         " has no normal (its triangles cancel or are degenerate)");
+    int root(int i) {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    }
+    void join(int a, int b) { parent[root(a)] = root(b); }
+};
+
+Eigen::Vector3d face_normal(const mesh::Mesh& m, const std::array<std::int32_t, 3>& t) {
+    return (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]);
+}
+
+int corner_of(const std::array<std::int32_t, 3>& t, std::int32_t v) {
+    return t[0] == v ? 0 : t[1] == v ? 1 : 2;
+}
+
+// Per triangle corner: whether each side (c, c+1) is sharp, and the corner's unit
+// normal, angle-weighted over the triangles around its vertex that no sharp side
+// separates from it (a smooth vertex: all of them, as [VPBM01]).
+struct CornerNormals {
+    std::vector<std::array<bool, 3>> sharp_side;
+    std::vector<Eigen::Vector3d> normal;  // 3 t + c
+};
+
+CornerNormals corner_normals(const mesh::Mesh& m, double sharp_angle) {
+    const std::size_t nt = m.triangles.size();
+    CornerNormals out{std::vector<std::array<bool, 3>>(nt, {false, false, false}),
+                      std::vector<Eigen::Vector3d>(3 * nt, Eigen::Vector3d::Zero())};
+    std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::pair<int, int>>> sides;  // (triangle, side)
+    for (std::size_t t = 0; t < nt; ++t)
+        for (int c = 0; c < 3; ++c) {
+            const std::int32_t a = m.triangles[t][c], b = m.triangles[t][(c + 1) % 3];
+            sides[{std::min(a, b), std::max(a, b)}].push_back({static_cast<int>(t), c});
+        }
+    const double cos_sharp = std::cos(sharp_angle);
+    Corners corners(3 * nt);
+    for (const auto& [edge, users] : sides) {
+        if (users.size() != 2) continue;  // open or non-manifold: each side keeps its own normals
+        const auto [t1, c1] = users[0];
+        const auto [t2, c2] = users[1];
+        const Eigen::Vector3d n1 = face_normal(m, m.triangles[t1]), n2 = face_normal(m, m.triangles[t2]);
+        const double norms = n1.norm() * n2.norm();
+        if (sharp_angle < M_PI && norms > 0 && n1.dot(n2) < cos_sharp * norms) {
+            out.sharp_side[t1][c1] = out.sharp_side[t2][c2] = true;
             continue;
         }
-        N[v].normalize();
+        for (const std::int32_t v : {edge.first, edge.second})
+            corners.join(3 * t1 + corner_of(m.triangles[t1], v), 3 * t2 + corner_of(m.triangles[t2], v));
     }
+    std::vector<Eigen::Vector3d> sum(3 * nt, Eigen::Vector3d::Zero());
+    for (std::size_t t = 0; t < nt; ++t) {
+        const Eigen::Vector3d n = face_normal(m, m.triangles[t]);
+        if (n.norm() == 0) continue;
+        for (int c = 0; c < 3; ++c) {
+            const auto& tri = m.triangles[t];
+            const Eigen::Vector3d e1 = m.positions[tri[(c + 1) % 3]] - m.positions[tri[c]];
+            const Eigen::Vector3d e2 = m.positions[tri[(c + 2) % 3]] - m.positions[tri[c]];
+            sum[corners.root(static_cast<int>(3 * t + c))] += std::atan2(e1.cross(e2).norm(), e1.dot(e2)) * n.normalized();
+        }
+    }
+    for (std::size_t k = 0; k < 3 * nt; ++k) {
+        const Eigen::Vector3d& n = sum[corners.root(static_cast<int>(k))];
+        if (n.norm() == 0)
+            // Bad input, not our failure: the mesh folds back on itself at this vertex.
+            throw geom::InvalidInput("pn_triangles: vertex " + std::to_string(m.triangles[k / 3][k % 3]) +
+                                     " has no normal (its triangles cancel or are degenerate)");
+        out.normal[k] = n.normalized();
+    }
+    return out;
+}
 
+}  // namespace
+
+TbpSolid pn_triangles(const mesh::Mesh& input, double sharp_angle) {
+    if (!(sharp_angle >= 0.0))
+        throw geom::InvalidInput("pn_triangles: sharp_angle = " + geom::format_value(sharp_angle) + "; expected >= 0");
+    const mesh::Mesh m = welded_cage(input, "pn_triangles");
+    const CornerNormals normals = corner_normals(m, sharp_angle);
     TbpSolid solid;
     solid.name = "pn";
-    for (const auto& t : m.triangles) {
-        const Eigen::Vector3d P[3] = {m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]};
-        const Eigen::Vector3d n[3] = {N[t[0]], N[t[1]], N[t[2]]};
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        const auto& tri = m.triangles[t];
+        const Eigen::Vector3d P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
+        const Eigen::Vector3d* n = &normals.normal[3 * t];
         // [VPBM01] Sec. 3.1: edge point near Pi towards Pj: (2 Pi + Pj - w_ij Ni) / 3,
-        // w_ij = (Pj - Pi) . Ni; centre b111 = E + (E - V) / 2.
-        auto edge = [&](int i, int j) { return (2 * P[i] + P[j] - (P[j] - P[i]).dot(n[i]) * n[i]) / 3.0; };
+        // w_ij = (Pj - Pi) . Ni; on a sharp side the straight line's (w_ij = 0), which
+        // both triangles of the side share: the crease stays, the solid stays closed.
+        const auto& sharp = normals.sharp_side[t];
+        auto edge = [&](int i, int j) {
+            const bool crease = sharp[(j == (i + 1) % 3) ? i : j];
+            return crease ? Eigen::Vector3d((2 * P[i] + P[j]) / 3.0)
+                          : Eigen::Vector3d((2 * P[i] + P[j] - (P[j] - P[i]).dot(n[i]) * n[i]) / 3.0);
+        };
         const Eigen::Vector3d b210 = edge(0, 1), b120 = edge(1, 0), b021 = edge(1, 2), b012 = edge(2, 1),
                               b102 = edge(2, 0), b201 = edge(0, 2);
+        // Centre b111 = E + (E - V) / 2.
         const Eigen::Vector3d E = (b210 + b120 + b021 + b012 + b102 + b201) / 6.0;
         const Eigen::Vector3d V = (P[0] + P[1] + P[2]) / 3.0;
         const Eigen::Vector3d b111 = E + (E - V) / 2.0;

@@ -13,10 +13,15 @@
 namespace trimkit::tbp {
 
 // Cubic PN-triangle solid of `mesh` (welded first at 1e-9 of its box diagonal).
-// Throws InvalidInput for an invalid mesh, one without triangles, or one with a
-// vertex where no normal can be formed (its triangles cancel: bad input, named
-// by the vertex index in the welded mesh).
-TbpSolid pn_triangles(const mesh::Mesh& mesh);
+// A side whose two triangles' normals differ by more than `sharp_angle` (radians;
+// the default keeps every side smooth) is a crease: its edge points lie on the
+// straight side for both triangles, and each corner's normal is averaged only over
+// the triangles no crease separates from it, so a cube stays a cube.
+// Throws InvalidInput for an invalid mesh, one without triangles, a negative or NaN
+// sharp_angle, or a vertex where no normal can be formed (its triangles cancel:
+// bad input, named by the vertex index in the welded mesh).
+constexpr double kNoSharpEdges = 4.0;  // more than pi: no side is a crease
+TbpSolid pn_triangles(const mesh::Mesh& mesh, double sharp_angle = kNoSharpEdges);
 
 struct LoopConversion {
     TbpSolid solid;            // one quartic patch per cage triangle

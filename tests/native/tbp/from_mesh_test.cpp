@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "geom/error.h"
@@ -94,6 +95,67 @@ TEST(LoopQuartics, RegularFacesAreExactAndSolidIsWatertight) {
     double volume = 0;
     for (const auto& t : m.triangles) volume += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]])) / 6;
     EXPECT_GT(volume, 3.0);  // outward orientation; a Loop limit shrinks the unit sphere (4.19) a little
+}
+
+// The unit cube as 12 outward triangles on 8 shared vertices.
+mesh::Mesh unit_cube() {
+    mesh::Mesh m;
+    for (int k = 0; k < 8; ++k) m.positions.push_back(Eigen::Vector3d(k & 1, (k >> 1) & 1, (k >> 2) & 1));
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) {
+        m.triangles.push_back({q[0], q[1], q[2]});
+        m.triangles.push_back({q[0], q[2], q[3]});
+    }
+    return m;
+}
+
+// Largest distance of a patch's control points from the plane of its corners.
+double off_plane(const geom::BezierTriangle& patch) {
+    const Eigen::Vector3d a = patch.corner(0), n = (patch.corner(1) - a).cross(patch.corner(2) - a).normalized();
+    double worst = 0;
+    for (const auto& p : patch.points()) worst = std::max(worst, std::abs((p - a).dot(n)));
+    return worst;
+}
+
+// Sides meeting at more than the sharp angle stay creases: the cube's faces meet at
+// 90 degrees, so at 30 degrees every patch is flat (the cube keeps its volume, 1),
+// while smoothing every side bulges them; the diagonals inside each square face
+// (0 degrees) stay smooth either way. The solid is closed in both cases.
+TEST(PnTriangles, SharpSidesStayCreasesSoACubeStaysACube) {
+    const mesh::Mesh cube = unit_cube();
+    const TbpSolid sharp = pn_triangles(cube, 30.0 * M_PI / 180.0);
+    const TbpSolid smooth = pn_triangles(cube);
+    double sharp_worst = 0, smooth_worst = 0;
+    for (const auto& p : sharp.patches) sharp_worst = std::max(sharp_worst, off_plane(p));
+    for (const auto& p : smooth.patches) smooth_worst = std::max(smooth_worst, off_plane(p));
+    EXPECT_LT(sharp_worst, 1e-15);
+    EXPECT_GT(smooth_worst, 0.05);
+    for (const TbpSolid* s : {&sharp, &smooth}) {
+        PolygonizeOptions o;
+        o.level = 2;
+        o.lod = 1;
+        const mesh::Mesh m = polygonize(*s, o);
+        EXPECT_TRUE(mesh::open_edges(m).closed());
+        // Volume by the divergence theorem over the polygonized triangles.
+        double volume = 0;
+        for (const auto& t : m.triangles)
+            volume += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]])) / 6.0;
+        if (s == &sharp) EXPECT_NEAR(volume, 1.0, 1e-12);
+        else EXPECT_GT(volume, 1.05);
+    }
+    EXPECT_THROW(pn_triangles(cube, -1.0), geom::InvalidInput);
+    EXPECT_THROW(pn_triangles(cube, NAN), geom::InvalidInput);
+}
+
+// Below every side's angle the sharp angle changes nothing: an icosphere's faces meet
+// at about 20 degrees (level 1), so a sharp angle of 30 degrees gives the smooth solid.
+TEST(PnTriangles, SharpAngleAboveEverySideChangesNothing) {
+    const mesh::Mesh ico = test::icosphere(1);
+    const TbpSolid a = pn_triangles(ico), b = pn_triangles(ico, 30.0 * M_PI / 180.0);
+    ASSERT_EQ(a.patches.size(), b.patches.size());
+    for (std::size_t k = 0; k < a.patches.size(); ++k)
+        for (std::size_t i = 0; i < a.patches[k].points().size(); ++i)
+            EXPECT_EQ(a.patches[k].points()[i], b.patches[k].points()[i]);
 }
 
 }  // namespace
