@@ -113,13 +113,19 @@ def cancel_when_reading():
     return None
 
 
+def counts_unchanged(what):
+    """The scene's counts, which must equal those before `what` started."""
+    after = counts()
+    if after != STATE["before"]:
+        fail(f"{what} changed the scene: {STATE['before']} -> {after}")
+    return after
+
+
 def wait_cancelled():
     from trimkit import modal_work
     if modal_work.ACTIVE:
         return 0.05
-    after = counts()
-    if after != STATE["before"]:
-        fail(f"the cancelled import changed the scene: {STATE['before']} -> {after}")
+    after = counts_unchanged("the cancelled import")
     stage, fraction, at = STATE["cancelled_at"]
     print(f"modal: cancelled at {stage} {fraction:.2f} after {at:.2f} s, ended "
           f"{time.perf_counter() - STATE['t0'] - at:.2f} s later; counts unchanged {after}")
@@ -144,9 +150,7 @@ def wait_escaped():
     from trimkit import modal_work
     if modal_work.ACTIVE:
         return 0.05
-    after = counts()
-    if after != STATE["before"]:
-        fail(f"the import cancelled by Esc changed the scene: {STATE['before']} -> {after}")
+    after = counts_unchanged("the import cancelled by Esc")
     print(f"modal: Esc pressed at once: ended after {time.perf_counter() - STATE['t0']:.2f} s; "
           f"counts unchanged {after}")
     print("modal: done")

@@ -383,13 +383,7 @@ def test_modal_import_finishes_and_a_cancelled_one_leaves_the_scene_unchanged():
     (tests/blender/modal_import.py): RUNNING_MODAL, the window's timers keep running
     while it reads and meshes, the objects appear at the end; a second import cancelled
     while reading leaves the scene's counts unchanged."""
-    xvfb = shutil.which("xvfb-run")
-    if xvfb is None:
-        raise Skip("xvfb-run not installed (apt-get install xvfb)")
-    try:
-        source = step_sample("as1-oc-214-mat.stp")
-    except Skip:
-        source = BRACKET
+    xvfb, source = xvfb_and_assembly()
     empty_scene()
     start = TMP / "modal" / "start.blend"  # opening a file skips the splash screen
     start.parent.mkdir(parents=True, exist_ok=True)
@@ -493,6 +487,18 @@ def import_step_into_empty_scene(path):
     before = set(bpy.data.objects)
     assert bpy.ops.import_scene.trimkit_step(filepath=str(path)) == {'FINISHED'}
     return [o for o in bpy.data.objects if o not in before]
+
+
+def xvfb_and_assembly():
+    """xvfb-run's path (Skip without it) and the file windowed tests import: the as1
+    assembly when STEP is available, else the bracket."""
+    xvfb = shutil.which("xvfb-run")
+    if xvfb is None:
+        raise Skip("xvfb-run not installed (apt-get install xvfb)")
+    try:
+        return xvfb, step_sample("as1-oc-214-mat.stp")
+    except Skip:
+        return xvfb, BRACKET
 
 
 def test_step_screw_imports_and_remeshes_from_the_stored_file():
@@ -1327,13 +1333,7 @@ def test_screenshots_of_panel_import_options_and_checked_assembly():
     """Blender with a window under Xvfb (tests/blender/screenshots.py) writes three
     screenshots into --out; each must exist at the window's size and not be blank."""
     import numpy as np
-    xvfb = shutil.which("xvfb-run")
-    if xvfb is None:
-        raise Skip("xvfb-run not installed (apt-get install xvfb)")
-    try:
-        source = step_sample("as1-oc-214-mat.stp")
-    except Skip:
-        source = BRACKET
+    xvfb, source = xvfb_and_assembly()
     out = pathlib.Path(ARGS.out)
     empty_scene()
     start = TMP / "screenshots" / "start.blend"  # opening a file skips the splash screen
