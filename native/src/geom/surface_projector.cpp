@@ -99,8 +99,9 @@ Eigen::Vector2d SurfaceProjector::invert(const Eigen::Vector3d& x, const Eigen::
     if (near) {
         Eigen::Vector2d alt = newton(x, *near);
         const double da = (s_.evaluate(alt.x(), alt.y()) - x).norm();
-        // Prefer continuity with the previous point unless clearly worse.
-        if (da <= du + 1e-9 * size_) {
+        // Prefer continuity with the previous point unless clearly worse (a point
+        // a hair off a pole, as a file's vertex often is, has a foot at any u).
+        if (da <= du + kSameFoot * size_) {
             uv = alt;
             du = da;
         }
@@ -114,15 +115,21 @@ Eigen::Vector2d SurfaceProjector::invert(const Eigen::Vector3d& x, const Eigen::
             else if (v1_ - uv.y() < zv && near->y() - v0_ < v1_ - near->y()) uv.y() = v0_;
         }
         // At a pole (a degenerate boundary) one parameter is free: keep near's.
-        try {
-            SurfaceDerivatives d = s_.derivatives(uv.x(), uv.y());
-            const double su = d.Su.norm(), sv = d.Sv.norm();
-            if (su < 1e-9 * sv) uv.x() = near->x();
-            if (sv < 1e-9 * su) uv.y() = near->y();
-        } catch (const NumericalFailure&) {
-        }
+        if (free_at(uv, 0)) uv.x() = near->x();
+        if (free_at(uv, 1)) uv.y() = near->y();
     }
     return uv;
+}
+
+bool parameter_is_free(const NurbsSurface& s, const Eigen::Vector2d& uv, int d, double size) {
+    try {
+        const SurfaceDerivatives D = s.derivatives(uv.x(), uv.y());
+        const double along = (d == 0 ? D.Su : D.Sv).norm(), across = (d == 0 ? D.Sv : D.Su).norm();
+        const auto [lo, hi] = d == 0 ? s.domain_u() : s.domain_v();
+        return along * (hi - lo) < kSameFoot * size && along < 1e-3 * across;
+    } catch (const NumericalFailure&) {
+        return false;
+    }
 }
 
 namespace {
@@ -153,6 +160,28 @@ std::optional<NurbsCurve2d> affine_inverse(const NurbsSurface& s,
         q.emplace_back(u0 + ab.x() * (u1 - u0), v0 + ab.y() * (v1 - v0));
     }
     return NurbsCurve2d(c.degree(), c.knots(), std::move(q), c.weights());
+}
+
+// Points at a pole have a free parameter (any value is the same point): each takes
+// it from the nearest point of the curve off the pole, so the curve reaches the
+// pole along its own iso-line instead of jumping to an arbitrary one.
+void settle_free_parameters(const SurfaceProjector& projector, std::vector<Eigen::Vector2d>* points) {
+    std::vector<Eigen::Vector2d>& uv = *points;
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(uv.size());
+    for (int d = 0; d < 2; ++d) {
+        std::vector<char> free(uv.size());
+        for (std::ptrdiff_t k = 0; k < n; ++k) free[k] = projector.free_at(uv[k], d);
+        for (std::ptrdiff_t k = 0; k < n; ++k) {
+            if (!free[k]) continue;
+            for (std::ptrdiff_t step = 1; step < n; ++step) {
+                const std::ptrdiff_t j = k - step >= 0 && !free[k - step] ? k - step
+                                         : k + step < n && !free[k + step] ? k + step : -1;
+                if (j < 0) continue;
+                uv[k][d] = uv[j][d];
+                break;
+            }
+        }
+    }
 }
 
 }  // namespace
@@ -194,6 +223,7 @@ NurbsCurve2d project_curve(const SurfaceProjector& projector, const NurbsCurve3d
     }
     // The first point had no neighbour to settle a seam or pole: redo it from the second.
     if (uv.size() > 1) uv[0] = projector.invert(x[0], &uv[1]);
+    settle_free_parameters(projector, &uv);
     for (std::size_t k = 0; k < t.size(); ++k)
         dmax = std::max(dmax, (s.evaluate(uv[k].x(), uv[k].y()) - x[k]).norm());
     if (max_distance) *max_distance = dmax;

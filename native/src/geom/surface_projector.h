@@ -15,6 +15,14 @@
 
 namespace trimkit::geom {
 
+// Feet of a point closer than this fraction of the surface's size to each other in
+// distance are equally good: continuity with the previous point decides.
+constexpr double kSameFoot = 1e-6;
+
+// True where parameter d (0: u, 1: v) of `s` is free at uv: a whole domain of it moves
+// the surface point by less than kSameFoot of `size` (at or a hair off a pole).
+bool parameter_is_free(const NurbsSurface& s, const Eigen::Vector2d& uv, int d, double size);
+
 class SurfaceProjector {
 public:
     explicit SurfaceProjector(const NurbsSurface& surface);
@@ -22,6 +30,9 @@ public:
     // (u,v) of the closest surface point to x. With `near`, Newton also starts
     // from it, and a seam or pole keeps the side / the u (or v) of `near`.
     Eigen::Vector2d invert(const Eigen::Vector3d& x, const Eigen::Vector2d* near = nullptr) const;
+
+    // parameter_is_free on this surface, with its sampled size.
+    bool free_at(const Eigen::Vector2d& uv, int d) const { return parameter_is_free(s_, uv, d, size_); }
 
     bool closed_u() const { return closed_u_; }
     bool closed_v() const { return closed_v_; }

@@ -1,4 +1,5 @@
 #include "io/iges_closed_surfaces.h"
+#include "io/trim_loop_repair.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "geom/extend_closed_surface.h"
+#include "geom/surface_projector.h"
 
 namespace trimkit::io {
 namespace {
@@ -57,16 +59,20 @@ Eigen::Vector2d wrap_into_domain(const geom::NurbsSurface& s, const SurfacePerio
     return uv;
 }
 
-bool unwrap_loop(geom::Loop& loop, const SurfacePeriods& periods) {
+bool unwrap_loop(geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods) {
     if (!periods.any()) return false;
+    const double size = surface.control_box().diagonal().norm();
     bool moved = false;
     for (std::size_t k = 1; k < loop.coedges.size(); ++k) {
         const geom::NurbsCurve2d& prev = loop.coedges[k - 1].curve;
         geom::NurbsCurve2d& cur = loop.coedges[k].curve;
-        const Eigen::Vector2d gap = prev.evaluate(prev.domain().second) - cur.evaluate(cur.domain().first);
+        const Eigen::Vector2d joint = prev.evaluate(prev.domain().second);
+        const Eigen::Vector2d gap = joint - cur.evaluate(cur.domain().first);
+        const Eigen::Vector2d at = wrap_into_domain(surface, periods, joint);
         Eigen::Vector2d shift = Eigen::Vector2d::Zero();
         for (int d = 0; d < 2; ++d)
-            if (periods[d] > 0.0) shift[d] = periods[d] * std::round(gap[d] / periods[d]);
+            if (periods[d] > 0.0 && !geom::parameter_is_free(surface, at, d, size))
+                shift[d] = periods[d] * std::round(gap[d] / periods[d]);
         if (shift.isZero()) continue;
         cur = cur.transformed(Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
         moved = true;
@@ -101,9 +107,17 @@ double settle_winding(geom::Loop& loop, const geom::NurbsSurface& surface, const
             }
             return length;
         };
+        // A joint where the loop already steps by whole periods (across a pole, where
+        // unwrap_loop leaves it) takes no second step: the two would cancel.
+        auto steps = [&](std::size_t j) {
+            const geom::NurbsCurve2d& a = loop.coedges[j].curve;
+            const geom::NurbsCurve2d& b = loop.coedges[j + 1].curve;
+            return std::round((b.evaluate(b.domain().first)[d] - a.evaluate(a.domain().second)[d]) / L) != 0.0;
+        };
         std::size_t best = n - 1;
         double best_length = iso_length(n - 1);
         for (std::size_t j = 0; j + 1 < n; ++j) {
+            if (steps(j)) continue;
             const double length = iso_length(j);
             if (length < kShorterIso * best_length) best = j, best_length = length;
         }
@@ -114,6 +128,45 @@ double settle_winding(geom::Loop& loop, const geom::NurbsSurface& surface, const
             loop.coedges[k].curve = loop.coedges[k].curve.transformed(
                 Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
         moved = best_length;
+    }
+    return moved;
+}
+
+namespace {
+
+Eigen::AlignedBox2d loop_box(const geom::Loop& loop) {
+    Eigen::AlignedBox2d box;
+    for (const geom::Coedge& e : loop.coedges) extend_by_samples(e.curve, &box);
+    return box;
+}
+
+void shift_loop(geom::Loop& loop, const Eigen::Vector2d& shift) {
+    for (geom::Coedge& e : loop.coedges)
+        e.curve = e.curve.transformed(Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
+}
+
+}  // namespace
+
+bool place_loops_by_largest(std::vector<geom::Loop>& loops, const SurfacePeriods& periods) {
+    if (!periods.any() || loops.size() < 2) return false;
+    std::size_t largest = 0;
+    for (std::size_t i = 1; i < loops.size(); ++i)
+        if (std::fabs(signed_area(loops[i])) > std::fabs(signed_area(loops[largest]))) largest = i;
+    const Eigen::AlignedBox2d range = loop_box(loops[largest]);
+    bool moved = false;
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+        if (i == largest || range.isEmpty()) continue;
+        const Eigen::Vector2d centre = loop_box(loops[i]).center();
+        Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+        for (int d = 0; d < 2; ++d) {
+            const double L = periods[d], lo = range.min()[d], hi = range.max()[d];
+            if (!(L > 0.0) || (centre[d] >= lo && centre[d] <= hi)) continue;
+            const double k = std::round((0.5 * (lo + hi) - centre[d]) / L);
+            if (centre[d] + k * L >= lo && centre[d] + k * L <= hi) shift[d] = k * L;
+        }
+        if (shift.isZero()) continue;
+        shift_loop(loops[i], shift);
+        moved = true;
     }
     return moved;
 }

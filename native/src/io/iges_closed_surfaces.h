@@ -31,8 +31,11 @@ Eigen::Vector2d wrap_into_domain(const geom::NurbsSurface& s, const SurfacePerio
                                  Eigen::Vector2d uv);
 
 // Shifts coedges by whole periods so that each starts within half a period of
-// where the previous one ends (the first stays). Returns true if any moved.
-bool unwrap_loop(geom::Loop& loop, const SurfacePeriods& periods);
+// where the previous one ends (the first stays), except across a joint at a pole of
+// `surface` in that direction: every u of a pole is the same point, so a coedge may
+// leave it on the other side of the seam (a sphere's seam edge runs up to the pole
+// on one side and back down on the other). Returns true if any moved.
+bool unwrap_loop(geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods);
 
 // A loop that winds around a closed direction (after unwrap_loop its end lies
 // a whole number w of periods from its start) bounds a region only together
@@ -43,6 +46,14 @@ bool unwrap_loop(geom::Loop& loop, const SurfacePeriods& periods);
 // whose model-space trim rounds the apex). Coedges after that joint are shifted
 // by -w periods. Returns the iso-curve's length, or -1 if nothing moved.
 double settle_winding(geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods);
+
+// Each loop unwrapped from its own start may sit whole periods away from the loop
+// that encloses it on the surface (a hole at u in [0.2, 1.4] beside an outer loop
+// unwrapped onto [-2π, 0]). Shifts every loop by whole periods so that the centre
+// of its (u,v) box lies in the range of the loop of largest area (the outer loop
+// encloses the others, and area does not change with a shift), where such a shift
+// exists. Returns true if any moved.
+bool place_loops_by_largest(std::vector<geom::Loop>& loops, const SurfacePeriods& periods);
 
 // Extends `surface` in its closed directions past each end of its domain that the
 // loops (sampled) pass by more than kOutsideDomain of the period, to their

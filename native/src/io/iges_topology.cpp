@@ -149,10 +149,22 @@ struct LoopBuilder {
         return low ? -1 : high ? 1 : 0;
     }
 
+    // The seam side (seam_side) of the other use in `loop` of coedge k's edge, or 0.
+    int partner_side(const geom::Loop& loop, const std::vector<char>& flagged, std::size_t k, int dir) const {
+        const int edge = loop.coedges[k].edge;
+        if (edge < 0) return 0;
+        for (std::size_t j = 0; j < loop.coedges.size(); ++j)
+            if (j != k && flagged[j] && loop.coedges[j].edge == edge) return seam_side(loop.coedges[j].curve, dir);
+        return 0;
+    }
+
     // A curve projected along a seam continues the loop on the side where the
     // previous coedge ends (a seam edge used twice by one loop, as in a cylinder
     // bounded by two circles and a seam line, is on the low side once and on the
-    // high side once; the projector cannot know which). Run after all add()s.
+    // high side once; the projector cannot know which). Where the previous coedge
+    // ends at a pole, every u there is the same point: the seam edge's other use in
+    // the loop decides instead (a sphere's seam runs up to a pole and back down on
+    // the other side). Run after all add()s.
     void settle_seam_sides(geom::Loop& loop) const {
         const std::size_t n = loop.coedges.size();
         if (on_seam.empty() || n < 2) return;
@@ -174,7 +186,11 @@ struct LoopBuilder {
                 if (!closed || side == 0) continue;
                 const auto [a, b] = dir == 0 ? S.nurbs.domain_u() : S.nurbs.domain_v();
                 const double here = side < 0 ? a : b, other = side < 0 ? b : a;
-                if (std::abs(prev_end[dir] - other) >= std::abs(prev_end[dir] - here)) continue;
+                if (projector.free_at(wrap_into_domain(S.nurbs, periods, prev_end), dir)) {
+                    if (partner_side(loop, flagged, k, dir) != side) continue;
+                } else if (std::abs(prev_end[dir] - other) >= std::abs(prev_end[dir] - here)) {
+                    continue;
+                }
                 std::vector<Vector2d> P = e.curve.points();
                 for (Vector2d& p : P) p[dir] = other;
                 e.curve = NurbsCurve2d(e.curve.degree(), e.curve.knots(), std::move(P),
@@ -303,7 +319,7 @@ double loop_length(const geom::Loop& loop, const geom::NurbsSurface& S) {
 // to continue each other, and the surface extended over loops that run past its
 // domain (not with a natural outer boundary, which is the domain itself).
 // Returns the length of the shortest iso-curve a winding loop was closed along
-// that is a near-pole (nonzero, below kNearPoleShare of the loop's length), or -1.
+// that is a near-pole (above kSameFoot, below kNearPoleShare of the loop's length), or -1.
 double cover_closed_surface(const IgesReader& r, geom::Face& face, bool natural_outer) {
     const double tol = r.closure_tolerance(face.surface);
     const SurfacePeriods periods = closed_periods(face.surface, tol);
@@ -311,17 +327,21 @@ double cover_closed_surface(const IgesReader& r, geom::Face& face, bool natural_
     double near_pole = -1.0;
     for (std::size_t i = 0; i < face.loops.size(); ++i) {
         geom::Loop& loop = face.loops[i];
-        unwrap_loop(loop, periods);
+        unwrap_loop(loop, face.surface, periods);
         if (natural_outer && i == 0) continue;
         const double iso = settle_winding(loop, face.surface, periods);
         if (iso < 0.0) continue;
         face.warnings.push_back("loop " + std::to_string(i + 1 - (natural_outer ? 1 : 0)) +
                                 " winds around the closed surface; closed along its iso-curve of length " +
                                 geom::format_value(iso));
-        if (iso > 0.0 && iso < kNearPoleShare * loop_length(loop, face.surface) && (near_pole < 0.0 || iso < near_pole))
+        // A pole (an iso-curve of no length, kSameFoot) is not a near-pole end.
+        const double length = loop_length(loop, face.surface);
+        if (iso > geom::kSameFoot * length && iso < kNearPoleShare * length && (near_pole < 0.0 || iso < near_pole))
             near_pole = iso;
     }
     if (natural_outer) return near_pole;
+    if (place_loops_by_largest(face.loops, periods))
+        face.warnings.push_back("loops shifted by whole periods into the range of the loop that encloses them");
     const auto [u0, u1] = face.surface.domain_u();
     const auto [v0, v1] = face.surface.domain_v();
     if (!cover_loops(face.surface, face.loops, periods, tol)) return near_pole;
@@ -370,6 +390,18 @@ void build_face_loops(IgesReader& r, const IgesSurface& S, const BoundaryHint& h
         build(0.0);
         face.warnings.push_back(near_pole_warning(iso));
     }
+}
+
+// Loop 1, which the file declares outer, unless another loop encloses it
+// (enclosing_loop); `what` is the file's word for a loop in the warning.
+void settle_outer_loop(geom::Face& face, const std::string& what) {
+    if (face.loops.size() < 2) return;
+    const std::size_t outer = enclosing_loop(face.loops, 0);
+    if (outer == 0) return;
+    face.loops[0].outer = false;
+    face.loops[outer].outer = true;
+    face.warnings.push_back(what + " " + std::to_string(outer + 1) + " encloses " + what +
+                            " 1; taken as the outer " + what);
 }
 
 }  // namespace
@@ -505,21 +537,7 @@ std::vector<int> IgesReader::read_face_entity(int de, const Eigen::Affine3d& pla
         IgesSurface S = surface(surface_de, hint.empty() ? nullptr : &hint);
         face.surface_kind = S.kind;
         build_face_loops(*this, S, hint, loops, natural_outer, first_is_outer, face);
-        // The outer loop encloses the others, so it has the largest area; some
-        // writers list a hole first (UKI60998.igs: a 143 whose first boundary is
-        // a circular hole, the rectangle second). Trust the areas over the order.
-        if (first_is_outer && face.loops.size() > 1) {
-            std::size_t largest = 0;
-            for (std::size_t i = 1; i < face.loops.size(); ++i)
-                if (std::fabs(signed_area(face.loops[i])) > std::fabs(signed_area(face.loops[largest])))
-                    largest = i;
-            if (largest != 0) {
-                face.loops[0].outer = false;
-                face.loops[largest].outer = true;
-                face.warnings.push_back("boundary " + std::to_string(largest + 1) +
-                                        " encloses boundary 1; taken as the outer boundary");
-            }
-        }
+        if (first_is_outer) settle_outer_loop(face, "boundary");
     } else if (is_surface_type(e.type)) {
         // A bare surface: its natural boundary.
         surface_de = de;
@@ -600,20 +618,17 @@ int IgesReader::read_brep_face(int de, const Eigen::Affine3d& placement, bool re
     }
     IgesSurface S = surface(surface_de, hint.empty() ? nullptr : &hint);
     face.surface_kind = S.kind;
-    build_face_loops(*this, S, hint, loops, false, false, face);
-    // Without the outer flag, the loop with the largest extent is the outer one.
-    int outer_index = 0;
-    if (outer_flag == 0) {
-        double best = -1;
-        for (std::size_t i = 0; i < face.loops.size(); ++i) {
-            const double a = std::fabs(signed_area(face.loops[i]));
-            if (a > best) {
-                best = a;
-                outer_index = static_cast<int>(i);
-            }
-        }
+    build_face_loops(*this, S, hint, loops, false, outer_flag != 0, face);
+    if (outer_flag != 0) {
+        settle_outer_loop(face, "loop");
+    } else if (!face.loops.empty()) {
+        // Without the outer flag, the loop with the largest extent is the outer one.
+        std::size_t outer_index = 0;
+        for (std::size_t i = 1; i < face.loops.size(); ++i)
+            if (std::fabs(signed_area(face.loops[i])) > std::fabs(signed_area(face.loops[outer_index])))
+                outer_index = i;
+        face.loops[outer_index].outer = true;
     }
-    if (!face.loops.empty()) face.loops[outer_index].outer = true;
     face.color = color_of(de);
     if (face.color < 0) face.color = color_of(surface_de);
     face.name = name_of(de, props);

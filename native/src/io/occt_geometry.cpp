@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include <Geom2dConvert.hxx>
@@ -129,6 +130,28 @@ geom::NurbsCurve<Dim> restricted(const geom::NurbsCurve<Dim>& c, double a, doubl
     return c.sub_curve(std::max(a, lo), std::min(b, hi));
 }
 
+// A periodic B-spline over [first, last] within one period: the period unrolled
+// (SetNotPeriodic keeps the parameterisation over [FirstParameter, + period]) and
+// cut to the range shifted by whole periods, knots shifted back. Empty when the
+// range runs across the period's end. (OCCT's CurveToBSplineCurve of a trimmed
+// periodic B-spline over exactly one period returns a curve that does not close:
+// the plane faces of a .brep prism over a periodic outline.)
+template <int Dim, class Handle>
+std::optional<geom::NurbsCurve<Dim>> unrolled_period(const Handle& b, double first, double last) {
+    const double period = b->Period(), f0 = b->FirstParameter(), eps = 1e-9 * period;
+    const double k = std::floor((first - f0 + eps) / period);
+    const double a = first - k * period, c = last - k * period;
+    if (!(period > 0.0) || c > f0 + period + eps) return std::nullopt;
+    Handle copy = Handle::DownCast(b->Copy());
+    copy->SetNotPeriodic();
+    const geom::NurbsCurve<Dim> n = restricted(nurbs_of<Dim>(copy), a, std::min(c, f0 + period));
+    if (k == 0.0) return n;
+    std::vector<double> knots = n.knots();
+    for (double& t : knots) t += k * period;
+    return geom::NurbsCurve<Dim>(n.degree(), std::move(knots), n.points(),
+                                 n.is_rational() ? n.weights() : std::vector<double>{});
+}
+
 // A 3D curve over [first, last] with the map from its OCCT parameter to the NURBS
 // one: identity for lines and B-splines, the arc map for circles and ellipses.
 struct MappedCurve {
@@ -160,8 +183,10 @@ MappedCurve mapped_curve(Handle(Geom_Curve) c, double first, double last) {
         return {restricted(nurbs_of<3>(GeomConvert::CurveToBSplineCurve(bezier)), first, last), {}};
     if (auto bspline = Handle(Geom_BSplineCurve)::DownCast(c); bspline && !bspline->IsPeriodic())
         return {restricted(nurbs_of<3>(bspline), first, last), {}};
-    if (auto bspline = Handle(Geom_BSplineCurve)::DownCast(c))
+    if (auto bspline = Handle(Geom_BSplineCurve)::DownCast(c)) {
+        if (auto one = unrolled_period<3>(bspline, first, last)) return {*one, {}};
         return {nurbs_of<3>(GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(bspline, first, last))), {}};
+    }
     throw UntranslatedKind(std::string("curve kind ") + c->DynamicType()->Name());
 }
 
@@ -370,6 +395,8 @@ TranslatedSurface translate_surface(const Handle(Geom_Surface)& surface, const E
 geom::NurbsCurve2d translate_curve(const Handle(Geom2d_Curve)& c, double first, double last) {
     Handle(Geom2d_BSplineCurve) b = Handle(Geom2d_BSplineCurve)::DownCast(c);
     if (!b.IsNull() && !b->IsPeriodic()) return restricted(nurbs_of<2>(b), first, last);
+    if (!b.IsNull())
+        if (auto one = unrolled_period<2>(b, first, last)) return *one;
     return nurbs_of<2>(Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(c, first, last)));
 }
 

@@ -134,6 +134,34 @@ double signed_area(const geom::Loop& loop) {
     return 0.5 * area;
 }
 
+namespace {
+
+Eigen::AlignedBox2d loop_box(const geom::Loop& loop) {
+    Eigen::AlignedBox2d box;
+    for (const geom::Coedge& e : loop.coedges) {
+        const auto [a, b] = e.curve.domain();
+        for (int k = 0; k <= kAreaSamples; ++k) box.extend(e.curve.evaluate(a + (b - a) * k / kAreaSamples));
+    }
+    return box;
+}
+
+}  // namespace
+
+std::size_t enclosing_loop(const std::vector<geom::Loop>& loops, std::size_t declared) {
+    if (declared >= loops.size()) return declared;
+    const Eigen::AlignedBox2d inner = loop_box(loops[declared]);
+    std::size_t best = declared;
+    double best_area = std::fabs(signed_area(loops[declared]));
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+        const double area = std::fabs(signed_area(loops[i]));
+        if (i != declared && area > best_area && loop_box(loops[i]).contains(inner)) {
+            best = i;
+            best_area = area;
+        }
+    }
+    return best;
+}
+
 void orient_loop(geom::Loop& loop, bool counter_clockwise) {
     const double area = signed_area(loop);
     if ((area > 0) == counter_clockwise || area == 0) return;

@@ -28,6 +28,13 @@ bool close_loop(geom::Loop& loop, const geom::NurbsSurface& surface, double mode
 // from a polygon through samples of its coedges.
 double signed_area(const geom::Loop& loop);
 
+// The loop that encloses the others: the one of largest |signed_area| whose (u,v)
+// box contains the box of loop `declared` (the file's outer loop), else `declared`.
+// Some writers flag a hole as the outer loop (UKI60998.igs lists a circular hole
+// first; OCCT's IGES B-rep writer flags a hole of a cylinder whose seam runs through
+// another hole); two loops side by side (bands of a closed surface) keep the flag.
+std::size_t enclosing_loop(const std::vector<geom::Loop>& loops, std::size_t declared);
+
 // Reverses the loop (order, curves and edge_reversed) when its direction is
 // not the one asked for.
 void orient_loop(geom::Loop& loop, bool counter_clockwise);

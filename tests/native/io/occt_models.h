@@ -41,4 +41,23 @@ void write_bspline_face_past_domain_brep(const std::string& path, double L, doub
 void write_box_assembly_step(const std::string& path, double dx, double dy, double dz,
                              const Eigen::Vector3d& t1, const Eigen::Vector3d& t2);
 
+// Solids written by OCCT's IGES writer in B-rep mode (186/514/510/508 on 192/196
+// surfaces with form 1): each returns the solid's area by OCCT's BRepGProp, the
+// independent measure the tests compare trimkit's mesh with.
+// A cylinder of radius R about z, z in [0, h], pierced by a cross hole of radius r
+// along x at z = h/2: one hole lies on the seam (u = 0), so the lateral face's outer
+// loop runs round that hole and OCCT's writer flags the other hole as the outer loop.
+double write_cylinder_cross_hole_iges(const std::string& path, double R, double h, double r);
+// A sphere of radius R about the origin without the box x > c, y > c, pierced near its
+// north pole by a hole of radius r along z at (a, 0): the sphere face's loops, unwrapped
+// from their own starts, sit a period apart in u.
+double write_sphere_cut_near_pole_iges(const std::string& path, double R, double c, double a, double r);
+
+// A prism of height h over the closed periodic B-spline interpolating `outline` (z = 0),
+// as .brep: the plane faces carry no stored p-curves, so OCCT makes them from the
+// periodic 3D curve. Returns the solid's area from the outline's samples (BRepGProp
+// is off on this solid).
+double write_periodic_spline_prism_brep(const std::string& path, const std::vector<Eigen::Vector2d>& outline,
+                                        double h);
+
 }  // namespace trimkit::test

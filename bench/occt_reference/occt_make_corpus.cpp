@@ -1,0 +1,306 @@
+// occt_make_corpus: builds a varied set of solids with Open CASCADE's modelling
+// algorithms (primitives, booleans, fillets, chamfers, sweeps, lofts, shells) and writes
+// each as STEP (AP214), IGES in B-rep mode (186/514), IGES in faces mode (144/142) and
+// .brep, so that trimkit's readers and mesher meet the kinds of faces real CAD systems
+// make (holes in planes, seams through trims, poles, apexes, blends, saddle curves)
+// beyond the files in ../shared/data/cad. Run by hand, then bench/step_check_all.py
+// --files on the output measures each file against OCCT's own reading.
+// Usage: occt_make_corpus OUT_DIR     (prints one line per file written)
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepFilletAPI_MakeChamfer.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepOffsetAPI_MakePipe.hxx>
+#include <BRepOffsetAPI_MakeThickSolid.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GC_MakeCircle.hxx>
+#include <GeomAPI_Interpolate.hxx>
+#include <GeomAPI_PointsToBSpline.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Writer.hxx>
+#include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
+#include <STEPControl_Writer.hxx>
+#include <Standard_Failure.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Trsf.hxx>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+gp_Ax2 axis_at(double x, double y, double z, gp_Dir dir = gp::DZ()) {
+    return gp_Ax2(gp_Pnt(x, y, z), dir);
+}
+
+TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b) { return BRepAlgoAPI_Cut(a, b).Shape(); }
+TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b) { return BRepAlgoAPI_Fuse(a, b).Shape(); }
+
+TopoDS_Shape rotated(const TopoDS_Shape& s, const gp_Ax1& axis, double angle) {
+    gp_Trsf t;
+    t.SetRotation(axis, angle);
+    return BRepBuilderAPI_Transform(s, t, true).Shape();
+}
+
+// Every edge of `s` filleted with `radius` (edges the algorithm cannot blend make it throw).
+TopoDS_Shape fillet_all(const TopoDS_Shape& s, double radius) {
+    BRepFilletAPI_MakeFillet fillet(s);
+    for (TopExp_Explorer e(s, TopAbs_EDGE); e.More(); e.Next()) fillet.Add(radius, TopoDS::Edge(e.Current()));
+    return fillet.Shape();
+}
+
+TopoDS_Wire circle_wire(const gp_Ax2& axis, double radius) {
+    return BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(gp_Circ(axis, radius))).Wire();
+}
+
+Handle(Geom_BSplineCurve) spline_through(const std::vector<gp_Pnt>& points) {
+    TColgp_Array1OfPnt array(1, static_cast<int>(points.size()));
+    for (size_t i = 0; i < points.size(); ++i) array.SetValue(static_cast<int>(i) + 1, points[i]);
+    return GeomAPI_PointsToBSpline(array).Curve();
+}
+
+// A plate 100 x 60 x 10 with three through holes of different radii, outer edges filleted.
+TopoDS_Shape plate_with_holes() {
+    TopoDS_Shape plate = BRepPrimAPI_MakeBox(100, 60, 10).Shape();
+    plate = fillet_all(plate, 2.0);
+    plate = cut(plate, BRepPrimAPI_MakeCylinder(axis_at(20, 30, -5), 8, 20).Shape());
+    plate = cut(plate, BRepPrimAPI_MakeCylinder(axis_at(50, 30, -5), 5, 20).Shape());
+    return cut(plate, BRepPrimAPI_MakeCylinder(axis_at(80, 20, -5), 3, 20).Shape());
+}
+
+// A cylinder whose seam runs through a cross hole: the hole's trim crosses u = 0.
+TopoDS_Shape cylinder_hole_on_seam() {
+    TopoDS_Shape body = BRepPrimAPI_MakeCylinder(axis_at(0, 0, 0), 20, 60).Shape();
+    return cut(body, BRepPrimAPI_MakeCylinder(axis_at(-40, 0, 30, gp::DX()), 6, 80).Shape());
+}
+
+// A sphere cut by a box corner and pierced near its pole (trims around the singular point).
+TopoDS_Shape sphere_cut_near_pole() {
+    TopoDS_Shape ball = BRepPrimAPI_MakeSphere(25).Shape();
+    ball = cut(ball, BRepPrimAPI_MakeBox(gp_Pnt(5, 5, -40), 40, 40, 80).Shape());
+    return cut(ball, BRepPrimAPI_MakeCylinder(axis_at(3, 0, 10), 4, 30).Shape());
+}
+
+// A torus with a slab removed: toroidal faces trimmed by planes across both seams.
+TopoDS_Shape torus_sliced() {
+    TopoDS_Shape ring = BRepPrimAPI_MakeTorus(40, 10).Shape();
+    return cut(ring, BRepPrimAPI_MakeBox(gp_Pnt(-60, -5, -20), 120, 10, 40).Shape());
+}
+
+// A full cone with its apex, pierced off-axis.
+TopoDS_Shape cone_with_apex() {
+    TopoDS_Shape cone = BRepPrimAPI_MakeCone(30, 0, 50).Shape();
+    return cut(cone, BRepPrimAPI_MakeCylinder(axis_at(-40, 8, 15, gp::DX()), 4, 80).Shape());
+}
+
+// Two perpendicular cylinders fused (saddle intersection curves), edges chamfered.
+TopoDS_Shape crossed_cylinders() {
+    TopoDS_Shape a = BRepPrimAPI_MakeCylinder(axis_at(0, 0, -40), 15, 80).Shape();
+    TopoDS_Shape b = BRepPrimAPI_MakeCylinder(axis_at(-40, 0, 0, gp::DX()), 10, 80).Shape();
+    return fuse(a, b);
+}
+
+// A vase: a B-spline profile revolved a full turn, with a slot cut through its wall.
+TopoDS_Shape revolved_spline() {
+    Handle(Geom_BSplineCurve) profile = spline_through(
+        {gp_Pnt(10, 0, 0), gp_Pnt(25, 0, 15), gp_Pnt(15, 0, 35), gp_Pnt(20, 0, 55), gp_Pnt(8, 0, 70)});
+    TopoDS_Edge side = BRepBuilderAPI_MakeEdge(profile);
+    TopoDS_Edge top = BRepBuilderAPI_MakeEdge(gp_Pnt(8, 0, 70), gp_Pnt(0, 0, 70));
+    TopoDS_Edge axis = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 70), gp_Pnt(0, 0, 0));
+    TopoDS_Edge bottom = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0));
+    TopoDS_Face section = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(side, top, axis, bottom).Wire());
+    TopoDS_Shape vase = BRepPrimAPI_MakeRevol(section, gp_Ax1(gp::Origin(), gp::DZ())).Shape();
+    return cut(vase, BRepPrimAPI_MakeBox(gp_Pnt(-2, -40, 20), 4, 80, 25).Shape());
+}
+
+// A closed periodic B-spline outline extruded 20 (linear extrusion faces) with a hole.
+TopoDS_Shape extruded_spline() {
+    Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, 12);
+    for (int i = 0; i < 12; ++i) {
+        double a = 2 * M_PI * i / 12, r = (i % 2 == 0) ? 40 : 28;
+        points->SetValue(i + 1, gp_Pnt(r * std::cos(a), r * std::sin(a), 0));
+    }
+    GeomAPI_Interpolate interpolate(points, true, 1e-7);
+    interpolate.Perform();
+    TopoDS_Edge outline = BRepBuilderAPI_MakeEdge(interpolate.Curve());
+    TopoDS_Face face = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(outline).Wire());
+    TopoDS_Shape body = BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, 20)).Shape();
+    return cut(body, BRepPrimAPI_MakeCylinder(axis_at(0, 0, -5), 10, 30).Shape());
+}
+
+// A loft from a circle to a rotated square (ruled B-spline sides).
+TopoDS_Shape loft_circle_to_square() {
+    BRepOffsetAPI_ThruSections loft(true, false);
+    loft.AddWire(circle_wire(axis_at(0, 0, 0), 20));
+    BRepBuilderAPI_MakeWire square;
+    gp_Pnt c[4] = {gp_Pnt(15, 0, 40), gp_Pnt(0, 15, 40), gp_Pnt(-15, 0, 40), gp_Pnt(0, -15, 40)};
+    for (int i = 0; i < 4; ++i) square.Add(BRepBuilderAPI_MakeEdge(c[i], c[(i + 1) % 4]));
+    loft.AddWire(square.Wire());
+    return loft.Shape();
+}
+
+// A tube: a circle swept along a B-spline path (pipe surface), hollowed.
+TopoDS_Shape swept_tube() {
+    Handle(Geom_BSplineCurve) path =
+        spline_through({gp_Pnt(0, 0, 0), gp_Pnt(0, 0, 30), gp_Pnt(20, 10, 60), gp_Pnt(50, 10, 70)});
+    TopoDS_Wire spine = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(path)).Wire();
+    TopoDS_Face disc = BRepBuilderAPI_MakeFace(circle_wire(axis_at(0, 0, 0), 6));
+    TopoDS_Shape tube = BRepOffsetAPI_MakePipe(spine, disc).Shape();
+    return cut(tube, BRepPrimAPI_MakeCylinder(axis_at(-20, 0, 15, gp::DX()), 3, 40).Shape());
+}
+
+// A box with rounded vertical edges shelled to 2 mm walls with its top face open
+// (offset faces: planes and cylinders of the inner wall).
+TopoDS_Shape shelled_box() {
+    TopoDS_Shape box = BRepPrimAPI_MakeBox(60, 40, 30).Shape();
+    BRepFilletAPI_MakeFillet round(box);
+    TopoDS_Face top;
+    for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+        TopoDS_Vertex a, b;
+        TopExp::Vertices(edge, a, b);
+        if (std::fabs(BRep_Tool::Pnt(a).Z() - BRep_Tool::Pnt(b).Z()) > 1) round.Add(5.0, edge);
+    }
+    TopoDS_Shape rounded = round.Shape();
+    double best = -1e9;
+    for (TopExp_Explorer e(rounded, TopAbs_FACE); e.More(); e.Next()) {
+        TopoDS_Face f = TopoDS::Face(e.Current());
+        double z = 1e9;
+        for (TopExp_Explorer v(f, TopAbs_VERTEX); v.More(); v.Next())
+            z = std::min(z, BRep_Tool::Pnt(TopoDS::Vertex(v.Current())).Z());
+        if (z > best) best = z, top = f;
+    }
+    TopTools_ListOfShape open;
+    open.Append(top);
+    BRepOffsetAPI_MakeThickSolid shell;
+    shell.MakeThickSolidByJoin(rounded, open, -2.0, 1e-3);
+    return shell.Shape();
+}
+
+// A box with chamfered edges and a blind pocket whose floor edges are filleted.
+TopoDS_Shape chamfered_pocket() {
+    TopoDS_Shape box = BRepPrimAPI_MakeBox(80, 50, 25).Shape();
+    BRepFilletAPI_MakeChamfer chamfer(box);
+    TopTools_IndexedMapOfShape edges;
+    TopExp::MapShapes(box, TopAbs_EDGE, edges);
+    for (int i = 1; i <= edges.Extent(); ++i) chamfer.Add(1.5, TopoDS::Edge(edges(i)));
+    TopoDS_Shape body = chamfer.Shape();
+    TopoDS_Shape pocket = fillet_all(BRepPrimAPI_MakeBox(gp_Pnt(15, 10, 10), 50, 30, 30).Shape(), 3.0);
+    return cut(body, pocket);
+}
+
+// A thin rib: a box with a slot 0.5 wide (thin planar faces beside wide ones).
+TopoDS_Shape thin_slot() {
+    TopoDS_Shape box = BRepPrimAPI_MakeBox(100, 40, 20).Shape();
+    return cut(box, BRepPrimAPI_MakeBox(gp_Pnt(10, 19.75, -5), 80, 0.5, 30).Shape());
+}
+
+// A sphere pierced by six small holes around its axis and rotated off the axes.
+TopoDS_Shape perforated_ball() {
+    TopoDS_Shape ball = BRepPrimAPI_MakeSphere(30).Shape();
+    for (int i = 0; i < 6; ++i) {
+        double a = M_PI * i / 3;
+        gp_Dir d(std::cos(a), std::sin(a), 0.6);
+        ball = cut(ball, BRepPrimAPI_MakeCylinder(gp_Ax2(gp::Origin(), d), 3, 40).Shape());
+    }
+    return rotated(ball, gp_Ax1(gp::Origin(), gp_Dir(1, 1, 0)), 0.7);
+}
+
+struct Part {
+    const char* name;
+    std::function<TopoDS_Shape()> make;
+};
+
+std::vector<Part> parts() {
+    return {{"plate_with_holes", plate_with_holes},       {"cylinder_hole_on_seam", cylinder_hole_on_seam},
+            {"sphere_cut_near_pole", sphere_cut_near_pole}, {"torus_sliced", torus_sliced},
+            {"cone_with_apex", cone_with_apex},           {"crossed_cylinders", crossed_cylinders},
+            {"revolved_spline", revolved_spline},         {"extruded_spline", extruded_spline},
+            {"loft_circle_to_square", loft_circle_to_square}, {"swept_tube", swept_tube},
+            {"shelled_box", shelled_box},                 {"chamfered_pocket", chamfered_pocket},
+            {"thin_slot", thin_slot},                     {"perforated_ball", perforated_ball}};
+}
+
+bool write_step(const TopoDS_Shape& s, const std::string& path) {
+    STEPControl_Writer writer;
+    return writer.Transfer(s, STEPControl_AsIs) == IFSelect_RetDone &&
+           writer.Write(path.c_str()) == IFSelect_RetDone;
+}
+
+bool write_iges(const TopoDS_Shape& s, const std::string& path, bool brep_mode) {
+    IGESControl_Controller::Init();
+    IGESControl_Writer writer("MM", brep_mode ? 1 : 0);
+    return writer.AddShape(s) && writer.Write(path.c_str());
+}
+
+int faces_of(const TopoDS_Shape& s) {
+    int n = 0;
+    for (TopExp_Explorer e(s, TopAbs_FACE); e.More(); e.Next()) ++n;
+    return n;
+}
+
+void write_part(const Part& part, const std::string& dir) {
+    TopoDS_Shape shape;
+    try {
+        shape = part.make();
+    } catch (const Standard_Failure& e) {
+        std::printf("%-24s modelling failed: %s\n", part.name, e.GetMessageString());
+        return;
+    }
+    if (!BRepCheck_Analyzer(shape).IsValid()) {
+        std::printf("%-24s not valid by BRepCheck_Analyzer: not written\n", part.name);
+        return;
+    }
+    std::string base = dir + "/" + part.name;
+    bool ok = write_step(shape, base + ".stp") && write_iges(shape, base + "_brep.igs", true) &&
+              write_iges(shape, base + "_faces.igs", false) && BRepTools::Write(shape, (base + ".brep").c_str());
+    std::printf("%-24s faces %3d  %s\n", part.name, faces_of(shape), ok ? "written" : "WRITE FAILED");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: occt_make_corpus OUT_DIR\n");
+        return 2;
+    }
+    Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+    for (const Part& part : parts()) write_part(part, argv[1]);
+    return 0;
+}

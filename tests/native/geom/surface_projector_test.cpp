@@ -1,0 +1,66 @@
+// SurfaceProjector and project_curve at a sphere's pole, where the longitude is free:
+// a curve that starts at (or a hair off) the pole keeps the longitude of the rest of
+// the curve there, so a seam edge running into the pole stays on its iso-line (IGES
+// B-rep spheres whose seam edges end at the poles: the loop closer cannot tell the
+// seam's sides apart otherwise).
+#include "geom/surface_projector.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geom/analytic_curves.h"
+#include "geom/analytic_surfaces.h"
+
+namespace trimkit::geom {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+NurbsSurface unit_sphere(double radius) {
+    return sphere_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), radius, 0,
+                        2 * kPi, -kPi / 2, kPi / 2);
+}
+
+Eigen::Vector3d on_sphere(double radius, double longitude, double latitude) {
+    return radius * Eigen::Vector3d(std::cos(latitude) * std::cos(longitude),
+                                    std::cos(latitude) * std::sin(longitude), std::sin(latitude));
+}
+
+// Every point of the projected curve at the u of its middle point.
+void expect_one_longitude(const NurbsCurve2d& c) {
+    const auto [a, b] = c.domain();
+    const double u = c.evaluate(0.5 * (a + b)).x();
+    for (const Eigen::Vector2d& p : c.points()) EXPECT_NEAR(p.x(), u, 1e-9) << "point at v = " << p.y();
+}
+
+TEST(SurfaceProjector, MeridianFromThePoleKeepsItsLongitudeAtThePole) {
+    const double R = 25, longitude = 2.0;
+    const NurbsSurface sphere = unit_sphere(R);
+    const SurfaceProjector projector(sphere);
+    const Eigen::Vector3d towards(std::cos(longitude), std::sin(longitude), 0);
+    // From the north pole (angle 0 from the axis) down to the equator.
+    const NurbsCurve3d meridian = circular_arc(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), towards, R, 0, kPi / 2);
+    const NurbsCurve2d uv = project_curve(projector, meridian);
+    expect_one_longitude(uv);
+    EXPECT_NEAR(uv.points().front().y(), kPi / 2, 1e-9);
+    // The same curve the other way: it ends at the pole.
+    expect_one_longitude(project_curve(projector, meridian.reversed()));
+}
+
+TEST(SurfaceProjector, CurveStartingAHairOffThePoleTakesTheLongitudeOfItsOtherPoints) {
+    const double R = 25;
+    const NurbsSurface sphere = unit_sphere(R);
+    const SurfaceProjector projector(sphere);
+    // A file's vertex 1e-9 R off the pole towards longitude 0.5, then a line to latitude
+    // 1.2 at longitude 2: at the first point any longitude is within 1e-9 R of it.
+    const Eigen::Vector3d start = on_sphere(R, 0.5, kPi / 2 - 1e-9);
+    const NurbsCurve3d line = line_segment(start, on_sphere(R, 2.0, 1.2), 0, 1);
+    const NurbsCurve2d uv = project_curve(projector, line);
+    ASSERT_GE(uv.points().size(), 3u);
+    EXPECT_NEAR(uv.points()[0].x(), uv.points()[1].x(), 1e-9);
+    EXPECT_NEAR(uv.points()[0].y(), kPi / 2, 1e-6);
+}
+
+}  // namespace
+}  // namespace trimkit::geom
