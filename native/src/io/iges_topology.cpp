@@ -149,13 +149,41 @@ struct LoopBuilder {
         return low ? -1 : high ? 1 : 0;
     }
 
+    // True if seam curves a and b run between the same two points in opposite
+    // directions along the seam in `dir` (the other coordinate, 1 - dir, reversed).
+    bool runs_back(const NurbsCurve2d& a, const NurbsCurve2d& b, int dir) const {
+        const auto [lo, hi] = dir == 0 ? S.nurbs.domain_v() : S.nurbs.domain_u();
+        const double eps = kOnSeam * (hi - lo);
+        const int o = 1 - dir;
+        return std::abs(a.evaluate(a.domain().first)[o] - b.evaluate(b.domain().second)[o]) <= eps &&
+               std::abs(a.evaluate(a.domain().second)[o] - b.evaluate(b.domain().first)[o]) <= eps;
+    }
+
     // The seam side (seam_side) of the other use in `loop` of coedge k's edge, or 0.
+    // Without shared edges (a 144 face) the other use is the seam curve that runs
+    // back along the same stretch of the seam.
     int partner_side(const geom::Loop& loop, const std::vector<char>& flagged, std::size_t k, int dir) const {
-        const int edge = loop.coedges[k].edge;
-        if (edge < 0) return 0;
-        for (std::size_t j = 0; j < loop.coedges.size(); ++j)
-            if (j != k && flagged[j] && loop.coedges[j].edge == edge) return seam_side(loop.coedges[j].curve, dir);
+        const geom::Coedge& e = loop.coedges[k];
+        for (std::size_t j = 0; j < loop.coedges.size(); ++j) {
+            if (j == k || !flagged[j]) continue;
+            const geom::Coedge& other = loop.coedges[j];
+            const bool same = e.edge >= 0 ? other.edge == e.edge : runs_back(e.curve, other.curve, dir);
+            if (same) return seam_side(other.curve, dir);
+        }
         return 0;
+    }
+
+    // Shifts c by whole periods so that its middle lies in the domain. A curve that
+    // is not on a seam has one place on the surface, but the projector may give it
+    // a period off (u in [-0.13, 0] for a half circle that ends on the seam from
+    // below 2pi); the seam curves after it would then take the wrong side.
+    void place_in_domain(NurbsCurve2d& c) const {
+        const Vector2d mid = c.evaluate(0.5 * (c.domain().first + c.domain().second));
+        const Vector2d shift = wrap_into_domain(S.nurbs, periods, mid) - mid;
+        Vector2d whole = Vector2d::Zero();
+        for (int d = 0; d < 2; ++d)
+            if (periods[d] > 0.0) whole[d] = periods[d] * std::round(shift[d] / periods[d]);
+        if (!whole.isZero()) c = c.transformed(Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(whole)));
     }
 
     // A curve projected along a seam continues the loop on the side where the
@@ -170,6 +198,8 @@ struct LoopBuilder {
         if (on_seam.empty() || n < 2) return;
         std::vector<char> flagged(n, 0);
         for (std::size_t k : on_seam) flagged[k] = 1;
+        for (std::size_t k = 0; k < n; ++k)
+            if (!flagged[k]) place_in_domain(loop.coedges[k].curve);
         // Start after a coedge that is not on the seam, so its end is settled.
         std::size_t first = 0;
         while (first < n && flagged[first]) ++first;

@@ -196,11 +196,15 @@ double area_of(const TopoDS_Shape& shape) {
     return props.Mass();
 }
 
-double write_brep_mode_iges(const TopoDS_Shape& shape, const std::string& path) {
+double write_iges(const TopoDS_Shape& shape, const std::string& path, bool brep_mode) {
     IGESControl_Controller::Init();
-    IGESControl_Writer writer("MM", 1);
+    IGESControl_Writer writer("MM", brep_mode ? 1 : 0);
     if (!writer.AddShape(shape) || !writer.Write(path.c_str())) throw std::runtime_error("cannot write " + path);
     return area_of(shape);
+}
+
+double write_brep_mode_iges(const TopoDS_Shape& shape, const std::string& path) {
+    return write_iges(shape, path, true);
 }
 
 }  // namespace
@@ -217,6 +221,12 @@ double write_sphere_cut_near_pole_iges(const std::string& path, double R, double
     ball = BRepAlgoAPI_Cut(ball, BRepPrimAPI_MakeBox(gp_Pnt(c, c, -2 * R), 2 * R, 2 * R, 4 * R).Shape()).Shape();
     const gp_Ax2 up(gp_Pnt(a, 0, 0), gp::DZ());
     return write_brep_mode_iges(BRepAlgoAPI_Cut(ball, BRepPrimAPI_MakeCylinder(up, r, 2 * R).Shape()).Shape(), path);
+}
+
+double write_ball_hole_on_seam_iges(const std::string& path, double R, double r, bool brep_mode) {
+    const TopoDS_Shape ball = BRepPrimAPI_MakeSphere(R).Shape();
+    const gp_Ax2 out(gp::Origin(), gp_Dir(1, 0, 0.6));
+    return write_iges(BRepAlgoAPI_Cut(ball, BRepPrimAPI_MakeCylinder(out, r, 2 * R).Shape()).Shape(), path, brep_mode);
 }
 
 double write_periodic_spline_prism_brep(const std::string& path, const std::vector<Eigen::Vector2d>& outline,

@@ -53,6 +53,12 @@ double write_cylinder_cross_hole_iges(const std::string& path, double R, double 
 // from their own starts, sit a period apart in u.
 double write_sphere_cut_near_pole_iges(const std::string& path, double R, double c, double a, double r);
 
+// A ball of radius R about the origin pierced from its centre by a cylinder of radius r
+// along (1, 0, 0.6): the hole lies on the sphere's seam (u = 0), whose edge splits its
+// circle into two halves, one each side of the seam. IGES B-rep mode (186...) or faces
+// mode (144/142, the sphere as a surface of revolution). Returns BRepGProp's area.
+double write_ball_hole_on_seam_iges(const std::string& path, double R, double r, bool brep_mode);
+
 // A prism of height h over the closed periodic B-spline interpolating `outline` (z = 0),
 // as .brep: the plane faces carry no stored p-curves, so OCCT makes them from the
 // periodic 3D curve. Returns the solid's area from the outline's samples (BRepGProp
