@@ -8,6 +8,7 @@
 #include <set>
 
 #include "geom/error.h"
+#include "tess/collapsed_side.h"
 #include "tess/kd_subdivision.h"
 #include "tess/surface_evaluator.h"
 #include "tess/triangulate_polygon.h"
@@ -85,9 +86,15 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     std::vector<Eigen::Vector2d> uv(trimmed.vertices.size());
     for (size_t i = 0; i < uv.size(); ++i) uv[i] = trimmed.vertices[i].uv;
     std::vector<std::array<int, 3>> triangles;
+    // Cells on a side the surface collapses to a point: triangulated about it (collapsed_side.h).
+    const CollapsedSides collapsed = collapsed_sides(face.surface);
+    std::array<std::vector<Eigen::Vector2d>, 4> polar;
     for (const CellPolygon& polygon : trimmed.polygons) {
         mesh::check_deadline(deadline, "triangulation");
-        const auto cell_triangles = triangulate_polygon(uv, polygon.outer, polygon.holes, deadline);
+        const int side = touched_collapsed_side(face.surface, collapsed, uv, polygon.outer);
+        if (side >= 0 && polar[side].empty()) polar[side] = polar_about_side(face.surface, side, uv);
+        const auto cell_triangles =
+            triangulate_polygon(side >= 0 ? polar[side] : uv, polygon.outer, polygon.holes, deadline);
         triangles.insert(triangles.end(), cell_triangles.begin(), cell_triangles.end());
     }
 

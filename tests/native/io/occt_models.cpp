@@ -18,6 +18,7 @@
 #include <GCE2d_MakeSegment.hxx>
 #include <BRepLib.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -227,6 +228,12 @@ double write_ball_hole_on_seam_iges(const std::string& path, double R, double r,
     const TopoDS_Shape ball = BRepPrimAPI_MakeSphere(R).Shape();
     const gp_Ax2 out(gp::Origin(), gp_Dir(1, 0, 0.6));
     return write_iges(BRepAlgoAPI_Cut(ball, BRepPrimAPI_MakeCylinder(out, r, 2 * R).Shape()).Shape(), path, brep_mode);
+}
+
+double write_cone_apex_hole_faces_iges(const std::string& path, double R, double h, double r) {
+    const TopoDS_Shape cone = BRepPrimAPI_MakeCone(R, 0, h).Shape();
+    const gp_Ax2 across(gp_Pnt(-4 * R / 3, 4 * R / 15, 0.3 * h), gp::DX());
+    return write_iges(BRepAlgoAPI_Cut(cone, BRepPrimAPI_MakeCylinder(across, r, 8 * R / 3).Shape()).Shape(), path, false);
 }
 
 double write_periodic_spline_prism_brep(const std::string& path, const std::vector<Eigen::Vector2d>& outline,

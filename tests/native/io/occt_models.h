@@ -59,6 +59,11 @@ double write_sphere_cut_near_pole_iges(const std::string& path, double R, double
 // mode (144/142, the sphere as a surface of revolution). Returns BRepGProp's area.
 double write_ball_hole_on_seam_iges(const std::string& path, double R, double r, bool brep_mode);
 
+// A cone of base radius R and height h (apex up) pierced across by a cylinder of
+// radius r along x at y = 4 R / 15, z = 0.3 h, as IGES faces mode (144: the cone a
+// surface of revolution whose domain side u = 0 is the apex). Returns BRepGProp's area.
+double write_cone_apex_hole_faces_iges(const std::string& path, double R, double h, double r);
+
 // A prism of height h over the closed periodic B-spline interpolating `outline` (z = 0),
 // as .brep: the plane faces carry no stored p-curves, so OCCT makes them from the
 // periodic 3D curve. Returns the solid's area from the outline's samples (BRepGProp

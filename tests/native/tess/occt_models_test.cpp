@@ -285,6 +285,19 @@ TEST(OcctModels, IgesSphereWithAHoleOnItsSeamKeepsTheHoleInBothModes) {
     }
 }
 
+// The cone's apex is one side of its (u,v) domain. Cells on that side were
+// triangulated in (u,v), where a fan from the side folds in 3D beside the hole
+// (a backward triangle of area 11.8: area +0.24 %, within T both ways).
+TEST(OcctModels, ConeApexCellsBesideAHoleDoNotFold) {
+    REQUIRE_OCCT();
+    const std::string path = temp_path("cone_apex.igs");
+    const double area = test::write_cone_apex_hole_faces_iges(path, 30, 50, 4);
+    const geom::Model model = io::read_model(path);
+    EXPECT_EQ(model.faces.size(), 3u);
+    for (double T : {0.05, 0.1, 0.2}) expect_whole(model, T, area, "T = " + std::to_string(T));
+    std::filesystem::remove(path);
+}
+
 // A prism over a periodic B-spline as .brep: OCCT converts the plane faces' computed
 // p-curves over exactly one period into curves that do not close; the reader unrolls
 // the period itself (it skipped both plane faces: "trim loops are not closed").
