@@ -6,8 +6,18 @@
 // beyond the files in ../shared/data/cad. Run by hand, then bench/step_check_all.py
 // --files on the output measures each file against OCCT's own reading.
 // Usage: occt_make_corpus OUT_DIR     (prints one line per file written)
+// (22 solids since 2026-12-02: round 2 added poles inside holes, a hole where a torus's
+// seams meet, an open revolution, a B-spline plate, filleted hole rims, offset surfaces,
+// an ellipsoid of B-spline faces and a frustum with a hole on its seam.)
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_GTransform.hxx>
+#include <BRepOffsetAPI_MakeOffsetShape.hxx>
+#include <GeomAPI_PointsToBSplineSurface.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <gp_GTrsf.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -242,6 +252,84 @@ TopoDS_Shape perforated_ball() {
     return rotated(ball, gp_Ax1(gp::Origin(), gp_Dir(1, 1, 0)), 0.7);
 }
 
+// Round 2 (2026-12-02): more seams, poles and blends.
+
+// A sphere pierced along its axis through both poles (the holes contain the poles)
+// and once more off the axis.
+TopoDS_Shape sphere_holes_at_poles() {
+    TopoDS_Shape ball = BRepPrimAPI_MakeSphere(25).Shape();
+    ball = cut(ball, BRepPrimAPI_MakeCylinder(axis_at(0, 0, -40), 5, 80).Shape());
+    return cut(ball, BRepPrimAPI_MakeCylinder(axis_at(0, -40, 8, gp::DY()), 3, 80).Shape());
+}
+
+// A torus pierced where both of its seams meet (u = 0, v = 0: the point (R + r, 0, 0)).
+TopoDS_Shape torus_hole_on_seams() {
+    TopoDS_Shape ring = BRepPrimAPI_MakeTorus(40, 12).Shape();
+    return cut(ring, BRepPrimAPI_MakeCylinder(axis_at(30, 0, 0, gp::DX()), 4, 40).Shape());
+}
+
+// A profile with an arc revolved 270 degrees (open sweep: planar end faces).
+TopoDS_Shape partial_revolution() {
+    TopoDS_Edge bottom = BRepBuilderAPI_MakeEdge(gp_Pnt(10, 0, 0), gp_Pnt(30, 0, 0));
+    TopoDS_Edge outer = BRepBuilderAPI_MakeEdge(gp_Pnt(30, 0, 0), gp_Pnt(30, 0, 20));
+    Handle(Geom_BSplineCurve) top_curve = spline_through({gp_Pnt(30, 0, 20), gp_Pnt(20, 0, 28), gp_Pnt(10, 0, 20)});
+    TopoDS_Edge top = BRepBuilderAPI_MakeEdge(top_curve);
+    TopoDS_Edge inner = BRepBuilderAPI_MakeEdge(gp_Pnt(10, 0, 20), gp_Pnt(10, 0, 0));
+    TopoDS_Face section = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(bottom, outer, top, inner).Wire());
+    return BRepPrimAPI_MakeRevol(section, gp_Ax1(gp::Origin(), gp::DZ()), 1.5 * M_PI).Shape();
+}
+
+// A wavy B-spline plate (a prism of a B-spline face) with two holes.
+TopoDS_Shape bspline_plate_with_holes() {
+    TColgp_Array2OfPnt grid(1, 5, 1, 4);
+    for (int i = 1; i <= 5; ++i)
+        for (int j = 1; j <= 4; ++j)
+            grid.SetValue(i, j, gp_Pnt(25.0 * (i - 1), 20.0 * (j - 1), 6 * std::sin(i * 1.3) * std::cos(j * 0.9)));
+    Handle(Geom_BSplineSurface) wave = GeomAPI_PointsToBSplineSurface(grid).Surface();
+    TopoDS_Face face = BRepBuilderAPI_MakeFace(wave, 1e-6);
+    TopoDS_Shape plate = BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, 8)).Shape();
+    plate = cut(plate, BRepPrimAPI_MakeCylinder(axis_at(30, 30, -30), 6, 60).Shape());
+    return cut(plate, BRepPrimAPI_MakeCylinder(axis_at(70, 25, -30), 4, 60).Shape());
+}
+
+// A block whose two through holes have filleted rims (tori meeting planes and cylinders).
+TopoDS_Shape filleted_holes_block() {
+    TopoDS_Shape block = BRepPrimAPI_MakeBox(80, 40, 20).Shape();
+    block = cut(block, BRepPrimAPI_MakeCylinder(axis_at(20, 20, -5), 8, 30).Shape());
+    block = cut(block, BRepPrimAPI_MakeCylinder(axis_at(60, 20, -5), 6, 30).Shape());
+    BRepFilletAPI_MakeFillet round(block);
+    for (TopExp_Explorer e(block, TopAbs_EDGE); e.More(); e.Next()) {
+        BRepAdaptor_Curve c(TopoDS::Edge(e.Current()));
+        if (c.GetType() == GeomAbs_Circle) round.Add(2.0, TopoDS::Edge(e.Current()));
+    }
+    return round.Shape();
+}
+
+// A rounded box offset outwards by 3 (offset surfaces of planes, cylinders and spheres).
+TopoDS_Shape offset_body() {
+    TopoDS_Shape box = fillet_all(BRepPrimAPI_MakeBox(50, 30, 20).Shape(), 4.0);
+    BRepOffsetAPI_MakeOffsetShape offset;
+    offset.PerformByJoin(box, 3.0, 1e-4);
+    return offset.Shape();
+}
+
+// A sphere stretched to an ellipsoid (a general transform: B-spline faces with poles),
+// pierced off its axis.
+TopoDS_Shape pierced_ellipsoid() {
+    gp_GTrsf stretch;
+    stretch.SetValue(1, 1, 1.6);
+    stretch.SetValue(2, 2, 1.0);
+    stretch.SetValue(3, 3, 0.7);
+    TopoDS_Shape ellipsoid = BRepBuilderAPI_GTransform(BRepPrimAPI_MakeSphere(20).Shape(), stretch, true).Shape();
+    return cut(ellipsoid, BRepPrimAPI_MakeCylinder(axis_at(10, 0, -30), 4, 60).Shape());
+}
+
+// A truncated cone with a cross hole through its seam.
+TopoDS_Shape frustum_hole_on_seam() {
+    TopoDS_Shape frustum = BRepPrimAPI_MakeCone(25, 12, 40).Shape();
+    return cut(frustum, BRepPrimAPI_MakeCylinder(axis_at(-40, 0, 20, gp::DX()), 5, 80).Shape());
+}
+
 struct Part {
     const char* name;
     std::function<TopoDS_Shape()> make;
@@ -254,7 +342,11 @@ std::vector<Part> parts() {
             {"revolved_spline", revolved_spline},         {"extruded_spline", extruded_spline},
             {"loft_circle_to_square", loft_circle_to_square}, {"swept_tube", swept_tube},
             {"shelled_box", shelled_box},                 {"chamfered_pocket", chamfered_pocket},
-            {"thin_slot", thin_slot},                     {"perforated_ball", perforated_ball}};
+            {"thin_slot", thin_slot},                     {"perforated_ball", perforated_ball},
+            {"sphere_holes_at_poles", sphere_holes_at_poles}, {"torus_hole_on_seams", torus_hole_on_seams},
+            {"partial_revolution", partial_revolution},   {"bspline_plate_with_holes", bspline_plate_with_holes},
+            {"filleted_holes_block", filleted_holes_block}, {"offset_body", offset_body},
+            {"pierced_ellipsoid", pierced_ellipsoid},     {"frustum_hole_on_seam", frustum_hole_on_seam}};
 }
 
 bool write_step(const TopoDS_Shape& s, const std::string& path) {

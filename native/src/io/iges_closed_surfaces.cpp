@@ -171,6 +171,27 @@ bool place_loops_by_largest(std::vector<geom::Loop>& loops, const SurfacePeriods
     return moved;
 }
 
+bool shift_loops_into_domain(std::vector<geom::Loop>& loops, const geom::NurbsSurface& surface,
+                             const SurfacePeriods& periods) {
+    if (!periods.any()) return false;
+    Eigen::AlignedBox2d box;
+    for (const geom::Loop& loop : loops) box.extend(loop_box(loop));
+    if (box.isEmpty()) return false;
+    Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+    for (int d = 0; d < 2; ++d) {
+        const double L = periods[d];
+        if (!(L > 0.0)) continue;
+        const auto [a, b] = domain(surface, d);
+        const double slack = kOutsideDomain * L;
+        if (box.min()[d] >= a - slack && box.max()[d] <= b + slack) continue;
+        const double k = std::round((0.5 * (a + b) - box.center()[d]) / L);
+        if (box.min()[d] + k * L >= a - slack && box.max()[d] + k * L <= b + slack) shift[d] = k * L;
+    }
+    if (shift.isZero()) return false;
+    for (geom::Loop& loop : loops) shift_loop(loop, shift);
+    return true;
+}
+
 bool cover_loops(geom::NurbsSurface& surface, const std::vector<geom::Loop>& loops,
                  const SurfacePeriods& periods, double tolerance) {
     if (!periods.any()) return false;

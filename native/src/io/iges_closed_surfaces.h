@@ -53,6 +53,13 @@ double settle_winding(geom::Loop& loop, const geom::NurbsSurface& surface, const
 // of its (u,v) box lies in the range of the loop of largest area (the outer loop
 // encloses the others, and area does not change with a shift), where such a shift
 // exists. Returns true if any moved.
+// All loops shifted together by whole periods so that they lie in the surface's
+// domain, where one shift does it (a fillet's quarter tube unwrapped onto v in
+// [-3pi/2, -pi] on a torus of v in [-pi, pi]): the face is the same, and its surface
+// need not be extended past its period (cover_loops). Returns true if they moved.
+bool shift_loops_into_domain(std::vector<geom::Loop>& loops, const geom::NurbsSurface& surface,
+                             const SurfacePeriods& periods);
+
 bool place_loops_by_largest(std::vector<geom::Loop>& loops, const SurfacePeriods& periods);
 
 // Extends `surface` in its closed directions past each end of its domain that the

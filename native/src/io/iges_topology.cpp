@@ -372,6 +372,7 @@ double cover_closed_surface(const IgesReader& r, geom::Face& face, bool natural_
     if (natural_outer) return near_pole;
     if (place_loops_by_largest(face.loops, periods))
         face.warnings.push_back("loops shifted by whole periods into the range of the loop that encloses them");
+    shift_loops_into_domain(face.loops, face.surface, periods);
     const auto [u0, u1] = face.surface.domain_u();
     const auto [v0, v1] = face.surface.domain_v();
     if (!cover_loops(face.surface, face.loops, periods, tol)) return near_pole;

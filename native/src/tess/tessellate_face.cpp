@@ -10,6 +10,7 @@
 #include "geom/error.h"
 #include "tess/collapsed_side.h"
 #include "tess/kd_subdivision.h"
+#include "tess/snap_trims_to_cell_lines.h"
 #include "tess/surface_evaluator.h"
 #include "tess/triangulate_polygon.h"
 #include "tess/trim_cells.h"
@@ -22,6 +23,9 @@ using Clock = std::chrono::steady_clock;
 // The cell grid reaches this fraction of the trim box beyond it on every side, so
 // no trim point lies on the grid's outer boundary (cells are half-open).
 constexpr double kBoxMargin = 1e-9;
+// Trim coordinates within this share of the margin of a cell line go onto it
+// (snap_trims_to_cell_lines): below the margin, so none reaches the grid's boundary.
+constexpr double kSnapShare = 0.5;
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
@@ -79,6 +83,7 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     timings.surface += seconds_since(start);
 
     start = Clock::now();
+    snap_trims_to_cell_lines(loops, grid, kSnapShare * margin.x());
     const TrimmedCells trimmed = trim_cells(grid, loops, deadline);
     timings.trim += seconds_since(start);
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geom/analytic_curves.h"
+#include "geom/analytic_surfaces.h"
 #include "geom/face.h"
 #include "io/iges_closed_surfaces.h"
 
@@ -59,6 +60,31 @@ TEST(PlaceLoopsByLargest, NoShiftWhenNoWholePeriodLandsInRange) {
     std::vector<geom::Loop> loops = {rectangle(0, 0, 1, 1), rectangle(3.9, 0.2, 4.1, 0.4)};
     EXPECT_FALSE(place_loops_by_largest(loops, {kTwoPi, 0.0}));
     EXPECT_NEAR(low_u(loops[1]), 3.9, 1e-12);
+}
+
+double low_v(const geom::Loop& loop) {
+    double v = INFINITY;
+    for (const geom::Coedge& e : loop.coedges) v = std::min(v, e.curve.evaluate(e.curve.domain().first).y());
+    return v;
+}
+
+// A fillet's quarter tube unwrapped onto v in [-3pi/2, -pi] on a torus of v in
+// [-pi, pi]: one shift of 2pi puts it (and its hole) inside the domain, so the
+// surface need not be extended; loops that no shift fits stay.
+TEST(ShiftLoopsIntoDomain, WholeFaceMovesByAPeriodWhereOneShiftFits) {
+    const geom::NurbsSurface torus = geom::torus_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
+                                                       Eigen::Vector3d::UnitX(), 8, 2, 0, kTwoPi, -M_PI, M_PI);
+    const SurfacePeriods periods{kTwoPi, kTwoPi};
+    std::vector<geom::Loop> loops = {rectangle(0, -1.5 * M_PI, kTwoPi, -M_PI), rectangle(1, -4, 2, -3.5)};
+    ASSERT_TRUE(shift_loops_into_domain(loops, torus, periods));
+    EXPECT_NEAR(low_v(loops[0]), 0.5 * M_PI, 1e-12);
+    EXPECT_NEAR(low_v(loops[1]), -4 + kTwoPi, 1e-12);
+    EXPECT_NEAR(low_u(loops[0]), 0.0, 1e-12);
+
+    std::vector<geom::Loop> wide = {rectangle(0, -4, 1, 2)};  // 6 of v: no shift fits
+    EXPECT_FALSE(shift_loops_into_domain(wide, torus, periods));
+    std::vector<geom::Loop> inside = {rectangle(0, 0, 1, 1)};
+    EXPECT_FALSE(shift_loops_into_domain(inside, torus, periods));
 }
 
 }  // namespace

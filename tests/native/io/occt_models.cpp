@@ -17,7 +17,10 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <GCE2d_MakeSegment.hxx>
 #include <BRepLib.hxx>
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <TopExp_Explorer.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepTools.hxx>
@@ -234,6 +237,17 @@ double write_cone_apex_hole_faces_iges(const std::string& path, double R, double
     const TopoDS_Shape cone = BRepPrimAPI_MakeCone(R, 0, h).Shape();
     const gp_Ax2 across(gp_Pnt(-4 * R / 3, 4 * R / 15, 0.3 * h), gp::DX());
     return write_iges(BRepAlgoAPI_Cut(cone, BRepPrimAPI_MakeCylinder(across, r, 8 * R / 3).Shape()).Shape(), path, false);
+}
+
+double write_filleted_hole_block_iges(const std::string& path) {
+    TopoDS_Shape block = BRepPrimAPI_MakeBox(80, 40, 20).Shape();
+    block = BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 20, -5), gp::DZ()), 8, 30).Shape()).Shape();
+    block = BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(60, 20, -5), gp::DZ()), 6, 30).Shape()).Shape();
+    BRepFilletAPI_MakeFillet round(block);
+    for (TopExp_Explorer e(block, TopAbs_EDGE); e.More(); e.Next())
+        if (BRepAdaptor_Curve(TopoDS::Edge(e.Current())).GetType() == GeomAbs_Circle)
+            round.Add(2.0, TopoDS::Edge(e.Current()));
+    return write_brep_mode_iges(round.Shape(), path);
 }
 
 double write_periodic_spline_prism_brep(const std::string& path, const std::vector<Eigen::Vector2d>& outline,

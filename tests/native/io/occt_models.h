@@ -64,6 +64,11 @@ double write_ball_hole_on_seam_iges(const std::string& path, double R, double r,
 // surface of revolution whose domain side u = 0 is the apex). Returns BRepGProp's area.
 double write_cone_apex_hole_faces_iges(const std::string& path, double R, double h, double r);
 
+// A block 80 x 40 x 20 with through holes of radius 8 and 6 whose rims are filleted
+// with radius 2 (quarter tubes of tori bounded by the iso-line where two of the torus's
+// Bezier patches meet), as IGES B-rep mode. Returns BRepGProp's area.
+double write_filleted_hole_block_iges(const std::string& path);
+
 // A prism of height h over the closed periodic B-spline interpolating `outline` (z = 0),
 // as .brep: the plane faces carry no stored p-curves, so OCCT makes them from the
 // periodic 3D curve. Returns the solid's area from the outline's samples (BRepGProp

@@ -298,6 +298,19 @@ TEST(OcctModels, ConeApexCellsBesideAHoleDoNotFold) {
     std::filesystem::remove(path);
 }
 
+// The fillets' loops run along the torus's knot line v = pi/2, a few 1e-10 either
+// side of it after the trim approximation; the cells above lost their kept regions
+// and the fillet faces failed ("trim loop lies 6.8 T from the mesh boundary").
+TEST(OcctModels, FilletAlongAKnotLineKeepsItsCells) {
+    REQUIRE_OCCT();
+    const std::string path = temp_path("filleted_holes.igs");
+    const double area = test::write_filleted_hole_block_iges(path);
+    const geom::Model model = io::read_model(path);
+    EXPECT_EQ(model.faces.size(), 12u);
+    for (double T : {0.025, 0.09, 0.27}) expect_whole(model, T, area, "T = " + std::to_string(T));
+    std::filesystem::remove(path);
+}
+
 // A prism over a periodic B-spline as .brep: OCCT converts the plane faces' computed
 // p-curves over exactly one period into curves that do not close; the reader unrolls
 // the period itself (it skipped both plane faces: "trim loops are not closed").
