@@ -6,12 +6,19 @@
 // beyond the files in ../shared/data/cad. Run by hand, then bench/step_check_all.py
 // --files on the output measures each file against OCCT's own reading.
 // Usage: occt_make_corpus OUT_DIR     (prints one line per file written)
-// (22 solids since 2026-12-02: round 2 added poles inside holes, a hole where a torus's
+// (26 solids since 2026-12-02: round 2 added poles inside holes, a hole where a torus's
 // seams meet, an open revolution, a B-spline plate, filleted hole rims, offset surfaces,
-// an ellipsoid of B-spline faces and a frustum with a hole on its seam.)
+// an ellipsoid of B-spline faces and a frustum with a hole on its seam; round 3 a coil
+// swept along a helix, a revolution closing on its axis, an elliptic extrusion and a
+// variable-radius fillet.)
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepLib.hxx>
+#include <BRepOffsetAPI_MakePipeShell.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <gp_Elips.hxx>
 #include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepOffsetAPI_MakeOffsetShape.hxx>
 #include <GeomAPI_PointsToBSplineSurface.hxx>
@@ -330,6 +337,62 @@ TopoDS_Shape frustum_hole_on_seam() {
     return cut(frustum, BRepPrimAPI_MakeCylinder(axis_at(-40, 0, 20, gp::DX()), 5, 80).Shape());
 }
 
+// Round 3 (2026-12-02): sweeps along helices, drafts, an elliptic extrusion, a
+// revolution that closes on its axis, variable fillets.
+
+// A thread-like coil: a small circle swept along three turns of a helix.
+TopoDS_Shape coil() {
+    Handle(Geom_CylindricalSurface) cyl = new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), 15);
+    Handle(Geom2d_Line) line = new Geom2d_Line(gp_Pnt2d(0, 0), gp_Dir2d(2 * M_PI, 8));
+    const double length = 3 * std::sqrt(4 * M_PI * M_PI + 64);
+    TopoDS_Edge helix = BRepBuilderAPI_MakeEdge(line, cyl, 0, length);
+    BRepLib::BuildCurves3d(helix);
+    TopoDS_Wire spine = BRepBuilderAPI_MakeWire(helix).Wire();
+    gp_Pnt start;
+    gp_Vec tangent;
+    BRepAdaptor_Curve c(helix);
+    c.D1(c.FirstParameter(), start, tangent);
+    BRepOffsetAPI_MakePipeShell sweep(spine);
+    sweep.SetMode(gp_Dir(0, 0, 1));
+    sweep.Add(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(start, gp_Dir(tangent)), 2))).Wire());
+    sweep.Build();
+    sweep.MakeSolid();
+    return sweep.Shape();
+}
+
+// A revolution whose profile closes on the axis at both ends (poles on a surface of
+// revolution of a B-spline), with a cross hole.
+TopoDS_Shape revolved_onto_axis() {
+    Handle(Geom_BSplineCurve) profile =
+        spline_through({gp_Pnt(0, 0, 0), gp_Pnt(12, 0, 8), gp_Pnt(16, 0, 25), gp_Pnt(9, 0, 40), gp_Pnt(0, 0, 46)});
+    TopoDS_Edge side = BRepBuilderAPI_MakeEdge(profile);
+    TopoDS_Edge axis = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 46), gp_Pnt(0, 0, 0));
+    TopoDS_Face section = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(side, axis).Wire());
+    TopoDS_Shape body = BRepPrimAPI_MakeRevol(section, gp_Ax1(gp::Origin(), gp::DZ())).Shape();
+    return cut(body, BRepPrimAPI_MakeCylinder(axis_at(-30, 0, 22, gp::DX()), 3, 60).Shape());
+}
+
+// An elliptic cylinder (linear extrusion of an ellipse) with a slot across its seam.
+TopoDS_Shape elliptic_extrusion() {
+    TopoDS_Edge ellipse = BRepBuilderAPI_MakeEdge(gp_Elips(gp_Ax2(gp::Origin(), gp::DZ()), 30, 12));
+    TopoDS_Face base = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(ellipse).Wire());
+    TopoDS_Shape body = BRepPrimAPI_MakePrism(base, gp_Vec(0, 0, 25)).Shape();
+    return cut(body, BRepPrimAPI_MakeBox(gp_Pnt(20, -2, 8), 20, 4, 9).Shape());
+}
+
+// A box whose top edges get a variable-radius fillet (1 to 5 along each edge).
+TopoDS_Shape variable_fillet_box() {
+    TopoDS_Shape box = BRepPrimAPI_MakeBox(60, 40, 30).Shape();
+    BRepFilletAPI_MakeFillet round(box);
+    for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+        TopoDS_Vertex a, b;
+        TopExp::Vertices(edge, a, b);
+        if (BRep_Tool::Pnt(a).Z() > 29 && BRep_Tool::Pnt(b).Z() > 29) round.Add(1.0, 5.0, edge);
+    }
+    return round.Shape();
+}
+
 struct Part {
     const char* name;
     std::function<TopoDS_Shape()> make;
@@ -346,7 +409,9 @@ std::vector<Part> parts() {
             {"sphere_holes_at_poles", sphere_holes_at_poles}, {"torus_hole_on_seams", torus_hole_on_seams},
             {"partial_revolution", partial_revolution},   {"bspline_plate_with_holes", bspline_plate_with_holes},
             {"filleted_holes_block", filleted_holes_block}, {"offset_body", offset_body},
-            {"pierced_ellipsoid", pierced_ellipsoid},     {"frustum_hole_on_seam", frustum_hole_on_seam}};
+            {"pierced_ellipsoid", pierced_ellipsoid},     {"frustum_hole_on_seam", frustum_hole_on_seam},
+            {"coil", coil},                               {"revolved_onto_axis", revolved_onto_axis},
+            {"elliptic_extrusion", elliptic_extrusion},   {"variable_fillet_box", variable_fillet_box}};
 }
 
 bool write_step(const TopoDS_Shape& s, const std::string& path) {
