@@ -19,6 +19,9 @@ using geom::format_value;
 // A cell narrower than this fraction of the box is not split further: the
 // parameters can no longer be told apart reliably (double has ~16 digits).
 constexpr double kMinRelativeWidth = 1e-12;
+// A patch's part in the box narrower than this share of the box, at the box's side,
+// makes no cells of its own: its neighbour's cells are stretched over it.
+constexpr double kSideSliver = 1e-6;
 
 // The trim segments a kd-tree node meets, for trim-aware tolerances.
 struct TrimSegments {
@@ -216,33 +219,49 @@ CellGrid subdivide_box(const geom::NurbsSurface& surface, const Eigen::AlignedBo
         if (!(t > 0.0) || !std::isfinite(t))
             throw geom::InvalidInput("kd_subdivision: tolerance = " + format_value(t) +
                                      "; expected a finite value > 0");
-    // Named, not structured bindings: `stretch` captures them (C++17 forbids capturing
-    // structured bindings; clang 14, the fuzz build's compiler, enforces it).
-    const std::pair<double, double> domain_u = surface.domain_u(), domain_v = surface.domain_v();
-    const double du0 = domain_u.first, du1 = domain_u.second, dv0 = domain_v.first, dv1 = domain_v.second;
     const double bu0 = box.min().x(), bu1 = box.max().x(), bv0 = box.min().y(), bv1 = box.max().y();
     const double min_du = kMinRelativeWidth * (bu1 - bu0);
     const double min_dv = kMinRelativeWidth * (bv1 - bv0);
     trims.margin = kTrimMeetMargin * box.sizes().maxCoeff();
-    // Cells on the domain's sides reach the box's sides (trim points outside the
-    // domain; evaluation clamps to the domain there).
+    // The patches' parts in the box, without slivers at the box's sides: a knot line
+    // inside the box's margin beyond the loops (a surface extended past its seam, whose
+    // knot 2pi lies 1e-9 inside the box) would give a row of cells thinner than the
+    // margin, where a trim along the line makes triangles flat in (u,v) that stand
+    // across the surface in 3D (torus_hole_on_seams_brep.igs: area +0.44 %).
+    struct Part {
+        const geom::NurbsSurface* bezier;
+        double u0, u1, v0, v1;
+    };
+    const double sliver_u = kSideSliver * (bu1 - bu0), sliver_v = kSideSliver * (bv1 - bv0);
+    const std::vector<geom::NurbsSurface> beziers = surface.bezier_patches();
+    std::vector<Part> parts;
+    double su0 = bu1, su1 = bu0, sv0 = bv1, sv1 = bv0;  // the kept parts' extent
+    for (const geom::NurbsSurface& bezier : beziers) {
+        const auto [pu0, pu1] = bezier.domain_u();
+        const auto [pv0, pv1] = bezier.domain_v();
+        const Part p{&bezier, std::max(pu0, bu0), std::min(pu1, bu1), std::max(pv0, bv0), std::min(pv1, bv1)};
+        if (!(p.u1 > p.u0) || !(p.v1 > p.v0)) continue;
+        const bool side_sliver = (p.u1 - p.u0 < sliver_u && (p.u0 == bu0 || p.u1 == bu1)) ||
+                                 (p.v1 - p.v0 < sliver_v && (p.v0 == bv0 || p.v1 == bv1));
+        if (side_sliver) continue;
+        parts.push_back(p);
+        su0 = std::min(su0, p.u0), su1 = std::max(su1, p.u1);
+        sv0 = std::min(sv0, p.v0), sv1 = std::max(sv1, p.v1);
+    }
+    // Cells on the kept parts' sides (the domain's sides, or a sliver's line) reach the
+    // box's sides (trim points outside the domain; evaluation clamps to it there).
     const auto stretch = [&](Cell c) {
-        if (c.u0 == std::max(du0, bu0)) c.u0 = std::min(c.u0, bu0);
-        if (c.u1 == std::min(du1, bu1)) c.u1 = std::max(c.u1, bu1);
-        if (c.v0 == std::max(dv0, bv0)) c.v0 = std::min(c.v0, bv0);
-        if (c.v1 == std::min(dv1, bv1)) c.v1 = std::max(c.v1, bv1);
+        if (c.u0 == su0) c.u0 = std::min(c.u0, bu0);
+        if (c.u1 == su1) c.u1 = std::max(c.u1, bu1);
+        if (c.v0 == sv0) c.v0 = std::min(c.v0, bv0);
+        if (c.v1 == sv1) c.v1 = std::max(c.v1, bv1);
         return c;
     };
 
     CellGrid grid;
     grid.box = box;
-    for (const geom::NurbsSurface& bezier : surface.bezier_patches()) {
-        const auto [pu0, pu1] = bezier.domain_u();
-        const auto [pv0, pv1] = bezier.domain_v();
-        const double u0 = std::max(pu0, bu0), u1 = std::min(pu1, bu1);
-        const double v0 = std::max(pv0, bv0), v1 = std::min(pv1, bv1);
-        if (!(u1 > u0) || !(v1 > v0)) continue;
-        const BezierPatch patch = restrict_patch(bezier_patch(bezier), u0, u1, v0, v1);
+    for (const Part& p : parts) {
+        const BezierPatch patch = restrict_patch(bezier_patch(*p.bezier), p.u0, p.u1, p.v0, p.v1);
         subdivide(patch, trims, stretch, mode, min_du, min_dv, grid.cells);
     }
     if (grid.cells.empty())

@@ -30,10 +30,8 @@ bool snap(double& x, const std::vector<double>& at, double eps) {
     return true;
 }
 
-}  // namespace
-
-int snap_trims_to_cell_lines(std::vector<TrimPolygon>& loops, const CellGrid& grid, double eps) {
-    const std::vector<double> u_lines = lines(grid, 0), v_lines = lines(grid, 1);
+int snap_to_lines(std::vector<TrimPolygon>& loops, const std::vector<double>& u_lines,
+                  const std::vector<double>& v_lines, double eps) {
     int moved = 0;
     for (TrimPolygon& loop : loops)
         for (PolylinePoint& p : loop.points) {
@@ -41,6 +39,21 @@ int snap_trims_to_cell_lines(std::vector<TrimPolygon>& loops, const CellGrid& gr
             moved += snap(p.uv.y(), v_lines, eps) ? 1 : 0;
         }
     return moved;
+}
+
+std::vector<double> distinct(std::vector<double> knots) {
+    knots.erase(std::unique(knots.begin(), knots.end()), knots.end());
+    return knots;
+}
+
+}  // namespace
+
+int snap_trims_to_cell_lines(std::vector<TrimPolygon>& loops, const CellGrid& grid, double eps) {
+    return snap_to_lines(loops, lines(grid, 0), lines(grid, 1), eps);
+}
+
+int snap_trims_to_knot_lines(std::vector<TrimPolygon>& loops, const geom::NurbsSurface& surface, double eps) {
+    return snap_to_lines(loops, distinct(surface.knots_u()), distinct(surface.knots_v()), eps);
 }
 
 }  // namespace trimkit::tess

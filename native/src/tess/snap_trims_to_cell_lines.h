@@ -20,4 +20,9 @@ namespace trimkit::tess {
 // loops, or trim points would snap onto the grid's outer boundary.
 int snap_trims_to_cell_lines(std::vector<TrimPolygon>& loops, const CellGrid& grid, double eps);
 
+// The same onto the surface's knot lines, before the kd subdivision: a trim that
+// wobbles across a knot line gets an unbounded crossing offset there (C^0 across it)
+// and its cells are split far below the tolerance.
+int snap_trims_to_knot_lines(std::vector<TrimPolygon>& loops, const geom::NurbsSurface& surface, double eps);
+
 }  // namespace trimkit::tess

@@ -71,6 +71,7 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     const Eigen::Vector2d margin = kBoxMargin * Eigen::Vector2d::Constant(size.maxCoeff());
     box.min() -= margin;
     box.max() += margin;
+    snap_trims_to_knot_lines(loops, face.surface, kSnapShare * margin.x());
 
     auto start = Clock::now();
     // Cells no trim meets hold only points of S; cells a trim meets also hold the

@@ -7,6 +7,7 @@
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <IGESControl_Controller.hxx>
@@ -248,6 +249,12 @@ double write_filleted_hole_block_iges(const std::string& path) {
         if (BRepAdaptor_Curve(TopoDS::Edge(e.Current())).GetType() == GeomAbs_Circle)
             round.Add(2.0, TopoDS::Edge(e.Current()));
     return write_brep_mode_iges(round.Shape(), path);
+}
+
+double write_torus_hole_on_seams_iges(const std::string& path) {
+    const TopoDS_Shape ring = BRepPrimAPI_MakeTorus(40, 12).Shape();
+    const gp_Ax2 radial(gp_Pnt(30, 0, 0), gp::DX());
+    return write_brep_mode_iges(BRepAlgoAPI_Cut(ring, BRepPrimAPI_MakeCylinder(radial, 4, 40).Shape()).Shape(), path);
 }
 
 double write_periodic_spline_prism_brep(const std::string& path, const std::vector<Eigen::Vector2d>& outline,

@@ -69,6 +69,12 @@ double write_cone_apex_hole_faces_iges(const std::string& path, double R, double
 // Bezier patches meet), as IGES B-rep mode. Returns BRepGProp's area.
 double write_filleted_hole_block_iges(const std::string& path);
 
+// A torus of radii 40 and 12 pierced radially by a cylinder of radius 4 where its two
+// seams meet ((52, 0, 0)), as IGES B-rep mode: the reader extends the torus past its
+// seam, and the loop runs along the extended surface's knot lines. Returns
+// BRepGProp's area.
+double write_torus_hole_on_seams_iges(const std::string& path);
+
 // A prism of height h over the closed periodic B-spline interpolating `outline` (z = 0),
 // as .brep: the plane faces carry no stored p-curves, so OCCT makes them from the
 // periodic 3D curve. Returns the solid's area from the outline's samples (BRepGProp

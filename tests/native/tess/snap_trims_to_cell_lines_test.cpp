@@ -1,6 +1,7 @@
 // Trim points a hair off a cell line go onto it (tess/snap_trims_to_cell_lines).
 #include <gtest/gtest.h>
 
+#include "geom/analytic_surfaces.h"
 #include "tess/snap_trims_to_cell_lines.h"
 
 namespace trimkit::tess {
@@ -37,6 +38,17 @@ TEST(SnapTrimsToCellLines, NearestLineInEachCoordinate) {
     EXPECT_EQ(snap_trims_to_cell_lines(loops, grid, 2e-9), 3);
     EXPECT_EQ(loops[0].points[0].uv, Eigen::Vector2d(1, 0.5));
     EXPECT_EQ(loops[0].points[1].uv.x(), 1 + 4e-9);
+}
+
+// Knot lines: a cylinder's quarter-circle knots at pi/2 steps in u; a trim 2e-10 off
+// u = pi goes onto it, one 1e-3 off does not.
+TEST(SnapTrimsToKnotLines, NoiseAboutAKnotLineGoesOntoIt) {
+    const geom::NurbsSurface cylinder = geom::cylinder_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
+                                                             Eigen::Vector3d::UnitX(), 5, 0, 2 * M_PI, 0, 10);
+    std::vector<TrimPolygon> loops = {polygon({{M_PI + 2e-10, 3}, {M_PI - 1e-3, 4}})};
+    EXPECT_EQ(snap_trims_to_knot_lines(loops, cylinder, 1e-9), 1);
+    EXPECT_EQ(loops[0].points[0].uv.x(), M_PI);
+    EXPECT_EQ(loops[0].points[1].uv.x(), M_PI - 1e-3);
 }
 
 }  // namespace
