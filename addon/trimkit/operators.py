@@ -11,7 +11,7 @@ import time
 from bpy.props import BoolProperty, CollectionProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
 from bpy_extras.io_utils import ExportHelper, ImportHelper
 
-from . import cad_faces, importer, io, lods, mesh_check, modal_work, properties, stored_source, tbp_objects
+from . import cad_faces, importer, io, lods, mesh_check, modal_work, properties, stored_source, tbp_io, tbp_objects
 from .settings import DEFAULTS
 
 SPLIT_ITEMS = [
@@ -391,7 +391,7 @@ class OBJECT_OT_trimkit_mesh_to_tbp(bpy.types.Operator):
     bl_options = {'REGISTER', 'UNDO'}
     levels: levels_property(1)
     lod: lod_property(1)
-    sharp_angle: FloatProperty(name="Sharp Angle", default=io.TBP_SHARP_ANGLE, min=0.0, max=math.pi, subtype='ANGLE',
+    sharp_angle: FloatProperty(name="Sharp Angle", default=tbp_io.TBP_SHARP_ANGLE, min=0.0, max=math.pi, subtype='ANGLE',
                                description="Sides whose faces meet at more than this stay sharp creases of the solid "
                                            "(a cube stays a cube); 180 degrees smooths every side")
 

@@ -15,7 +15,7 @@ import pathlib
 import bpy
 import numpy as np
 
-from . import blender_mesh, io, stored_source
+from . import blender_mesh, stored_source, tbp_io
 
 
 def is_tbp(obj):
@@ -29,7 +29,7 @@ def is_tbp_kind(obj):
 
 
 def stored_solid(text):
-    return io.tbp_from_bytes(stored_source.load(text), stored_source.file_name(text))
+    return tbp_io.tbp_from_bytes(stored_source.load(text), stored_source.file_name(text))
 
 
 def record(props, patches, triangles, seconds):
@@ -66,11 +66,11 @@ def set_tbp_props(obj, text, name, levels, lod, kind='TBP'):
 
 
 def import_tbp(context, filepath, levels, lod):
-    """A new object polygonized from a .tbp file; returns (object, io.TbpMeshing)."""
+    """A new object polygonized from a .tbp file; returns (object, tbp_io.TbpMeshing)."""
     path = pathlib.Path(filepath)
-    solid, data = io.read_tbp_source(path)
+    solid, data = tbp_io.read_tbp_source(path)
     name = solid.name or path.stem
-    meshing = io.tbp_mesh(solid, levels, lod, name=name)
+    meshing = tbp_io.tbp_mesh(solid, levels, lod, name=name)
     text = stored_source.store(path.name, data)
     obj = link_new(context, name, meshing.part)
     set_tbp_props(obj, text, path.name, levels, lod)
@@ -93,15 +93,15 @@ def mesh_arrays(context, obj):
     return positions.reshape(-1, 3), triangles.reshape(-1, 3)
 
 
-def mesh_to_tbp(context, obj, levels, lod, sharp_angle=io.TBP_SHARP_ANGLE):
+def mesh_to_tbp(context, obj, levels, lod, sharp_angle=tbp_io.TBP_SHARP_ANGLE):
     """A new TBP object (cubic PN triangles, creases above `sharp_angle` kept) from a
     closed mesh object, with its transform; the source mesh is hidden."""
     positions, triangles = mesh_arrays(context, obj)
     name = f"{obj.name} TBP"
-    solid = io.mesh_to_tbp(positions, triangles, name, sharp_angle)
-    meshing = io.tbp_mesh(solid, levels, lod, name=name)
+    solid = tbp_io.mesh_to_tbp(positions, triangles, name, sharp_angle)
+    meshing = tbp_io.tbp_mesh(solid, levels, lod, name=name)
     file_name = f"{name}.tbp"
-    text = stored_source.store(file_name, io.tbp_bytes(solid))
+    text = stored_source.store(file_name, tbp_io.tbp_bytes(solid))
     new = link_new(context, name, meshing.part, obj.matrix_world.copy())
     set_tbp_props(new, text, file_name, levels, lod)
     record(new.trimkit, meshing.patches, meshing.triangles, meshing.seconds)
@@ -115,7 +115,7 @@ def tool_matrix(target, tool):
 
 
 def trim(context, target, tool, keep, levels, lod):
-    """A new object: `target`'s patches trimmed against the solid of `tool`; returns (object, io.TbpTrim)."""
+    """A new object: `target`'s patches trimmed against the solid of `tool`; returns (object, tbp_io.TbpTrim)."""
     if not is_tbp(target) or not is_tbp(tool):
         raise ValueError("trim needs two TBP solid objects (import a .tbp or use Mesh to TBP)")
     if target == tool:
@@ -139,8 +139,8 @@ def trim(context, target, tool, keep, levels, lod):
 
 def trim_solids(target_text, tool_text, matrix, keep, levels, lod, name):
     target = stored_solid(target_text)
-    tool = io.transform_tbp(stored_solid(tool_text), matrix)
-    return io.tbp_trim(target, tool, keep, levels, lod, name=name)
+    tool = tbp_io.transform_tbp(stored_solid(tool_text), matrix)
+    return tbp_io.tbp_trim(target, tool, keep, levels, lod, name=name)
 
 
 def remesh(obj):
@@ -152,7 +152,7 @@ def remesh(obj):
                              props.tbp_lod, obj.name)
         patches = len(stored_solid(props.source))
     else:
-        result = io.tbp_mesh(stored_solid(props.source), props.tbp_levels, props.tbp_lod, name=obj.name)
+        result = tbp_io.tbp_mesh(stored_solid(props.source), props.tbp_levels, props.tbp_lod, name=obj.name)
         patches = result.patches
     blender_mesh.replace_mesh(obj, result.part, props.smooth, props.exact_normals)
     record(props, patches, result.triangles, result.seconds)

@@ -452,7 +452,7 @@ NORMAL_ANGLE_LIMIT = 0.05  # degrees
 
 
 def test_custom_normals_are_the_exact_surface_normals():
-    from trimkit import blender_mesh, io
+    from trimkit import blender_mesh, io, tbp_io
     model, _ = io.read_source(BRACKET)
     part = io.tessellate(model, 0.001, relative=True, scale=1e-3).parts[0]
     me = blender_mesh.create_mesh(part)
@@ -461,7 +461,7 @@ def test_custom_normals_are_the_exact_surface_normals():
     bracket_angle = worst_normal_angle(me, part)
     blender_angle = worst_normal_angle(blender_mesh.create_mesh(part, exact_normals=False), part)
     assert blender_angle > 10 * NORMAL_ANGLE_LIMIT, f"Blender's own normals are as close ({blender_angle} deg)"
-    cube = io.tbp_mesh(io.read_tbp_source(tbp_cube_file())[0], 2, 1).part  # welded across the creases
+    cube = tbp_io.tbp_mesh(tbp_io.read_tbp_source(tbp_cube_file())[0], 2, 1).part  # welded across the creases
     assert blender_mesh.vertex_normals_if_shared(cube.triangles, cube.corner_normals, len(cube.positions)) is None
     cube_angle = worst_normal_angle(blender_mesh.create_mesh(cube), cube)
     assert bracket_angle < NORMAL_ANGLE_LIMIT and cube_angle < NORMAL_ANGLE_LIMIT, (bracket_angle, cube_angle)
