@@ -40,6 +40,8 @@ class ImportCadBase(ImportHelper, modal_work.ModalWork):
     units: EnumProperty(name="Units", items=properties.UNIT_ITEMS, default=DEFAULTS.units,
                         description="What the file's numbers are: the unit it declares, or one you choose")
     split: EnumProperty(name="Objects", items=SPLIT_ITEMS, default=DEFAULTS.split)
+    origin: EnumProperty(name="Origin", items=properties.ORIGIN_ITEMS, default=DEFAULTS.origin,
+                         description="Where each object's origin goes: the file's, or its part's box centre")
     smooth: BoolProperty(name="Smooth Shading", default=DEFAULTS.smooth,
                          description="Smooth shading with custom normals from the exact surface")
     exact_normals: BoolProperty(name="Exact Normals", default=DEFAULTS.exact_normals,
@@ -66,7 +68,7 @@ class ImportCadBase(ImportHelper, modal_work.ModalWork):
         return importer.ImportSettings(
             tolerance=self.tolerance, relative=self.relative, relative_tolerance=self.relative_tolerance,
             angle=self.angle, mode=self.mode, trim_method=self.trim_method, units=self.units,
-            split=self.split, smooth=self.smooth, exact_normals=self.exact_normals, uv_mode=self.uv_mode,
+            split=self.split, origin=self.origin, smooth=self.smooth, exact_normals=self.exact_normals, uv_mode=self.uv_mode,
             read_timeout=self.read_timeout, face_timeout=self.face_timeout)
 
     def paths(self):
@@ -172,7 +174,7 @@ class IMPORT_PT_trimkit_units(TrimkitImportPanel, bpy.types.Panel):
 
 class IMPORT_PT_trimkit_objects(TrimkitImportPanel, bpy.types.Panel):
     bl_label = "Objects"
-    properties = ("split",)
+    properties = ("split", "origin")
 
 
 class IMPORT_PT_trimkit_shading(TrimkitImportPanel, bpy.types.Panel):

@@ -679,6 +679,70 @@ def test_step_assembly_imports_as_a_collection_tree_of_linked_duplicates():
           f"checked (5 meshes) in {seconds:.1f} s, every face passes")
 
 
+def world_vertices(obj):
+    import numpy as np
+    me = obj.data
+    co = np.empty(3 * len(me.vertices), np.float64)
+    me.vertices.foreach_get("co", co)
+    m = np.array(obj.matrix_world, np.float64)
+    return co.reshape(-1, 3) @ m[:3, :3].T + m[:3, 3]
+
+
+def world_box_centre(obj):
+    """Centre of the object's bounding box (Blender's bound_box, its 8 corners) in world space."""
+    corners = [obj.matrix_world @ mathutils.Vector(c) for c in obj.bound_box]
+    return mathutils.Vector([(min(c[i] for c in corners) + max(c[i] for c in corners)) / 2 for i in range(3)])
+
+
+def test_part_box_centre_origins_keep_the_world_positions_of_an_assembly():
+    import numpy as np
+    path = step_sample("as1-oc-214-mat.stp")
+    empty_scene()
+    assert bpy.ops.import_scene.trimkit_step(filepath=str(path)) == {'FINISHED'}  # origin='FILE', the default
+    file_origin = {o.name: (world_vertices(o), o.matrix_world.translation.copy()) for o in bpy.data.objects}
+    empty_scene()
+    assert bpy.ops.import_scene.trimkit_step(filepath=str(path), origin='BOX') == {'FINISHED'}
+    objects = list(bpy.data.objects)
+    assert sorted(o.name for o in objects) == sorted(file_origin), "the same objects either way"
+    assert len(instance_groups(objects)) == 5, "instances still share their part's mesh"
+    moved = aligned = worst_shift = worst_centre = 0
+    for o in objects:
+        before, file_translation = file_origin[o.name]
+        after = world_vertices(o)
+        size = float(np.ptp(after, axis=0).max())
+        worst_shift = max(worst_shift, float(np.abs(after - before).max()) / size)
+        # the origin is the centre of the object's box: the mesh's own box is centred on it ...
+        local = np.array([c[:] for c in o.bound_box])
+        assert np.abs(local.min(0) + local.max(0)).max() < 1e-6 * size, (o.name, local.min(0), local.max(0))
+        # ... and so, in world space, the origin is the world box's centre
+        centre = world_box_centre(o)
+        worst_centre = max(worst_centre, (o.matrix_world.translation - centre).length / size)
+        # (where the part's vertices are axis-aligned in world space, their box is that box)
+        rotation = np.array(o.matrix_world.to_3x3())
+        if np.all(np.isclose(np.abs(rotation), 0.0, atol=1e-9) | np.isclose(np.abs(rotation), 1.0, atol=1e-9)):
+            vertex_centre = (after.min(0) + after.max(0)) / 2
+            assert np.abs(vertex_centre - np.array(o.matrix_world.translation)).max() < 1e-6 * size, o.name
+            aligned += 1
+        moved += (o.matrix_world.translation - file_translation).length > 1e-3 * size
+    assert worst_shift < 1e-6 and worst_centre < 1e-6, (worst_shift, worst_centre)
+    assert moved > len(objects) // 2, moved  # the file's part origins are mostly not at their box centres
+    # A re-mesh and the check work in the part's coordinates: the mesh stays put and passes.
+    bolt = max(objects, key=lambda o: o.trimkit.origin.length)
+    box = [bolt.matrix_world @ mathutils.Vector(c) for c in bolt.bound_box]
+    size = max(bolt.dimensions)
+    select_only([bolt])
+    bolt.trimkit.relative = False
+    bolt.trimkit.tolerance *= 0.5
+    assert bpy.ops.object.trimkit_retessellate() == {'FINISHED'}
+    again = [bolt.matrix_world @ mathutils.Vector(c) for c in bolt.bound_box]
+    assert max((a - b).length for a, b in zip(box, again)) < 0.01 * size, (box, again)
+    assert bpy.ops.object.trimkit_check() == {'FINISHED'}
+    assert bolt.trimkit.check_report.startswith(f"{bolt.trimkit.faces} faces, all pass"), bolt.trimkit.check_report
+    print(f"    as1 Part Box Centre: {len(objects)} objects, {moved} origins moved; world vertices within "
+          f"{worst_shift:.1e} of File Origin's, origins within {worst_centre:.1e} of the box centres (of size; "
+          f"{aligned} axis-aligned ones: the world vertex box's centre); "
+          f"{bolt.name} re-meshed and checked: {bolt.trimkit.check_report[:40]}")
+
 # -- TBP solids ---------------------------------------------------------------
 
 TBP_SLOPE = math.sqrt(1 + 0.1 ** 2 + 0.05 ** 2)
