@@ -396,6 +396,9 @@ class OBJECT_OT_trimkit_mesh_to_tbp(bpy.types.Operator):
     sharp_angle: FloatProperty(name="Sharp Angle", default=tbp_io.TBP_SHARP_ANGLE, min=0.0, max=math.pi, subtype='ANGLE',
                                description="Sides whose faces meet at more than this stay sharp creases of the solid "
                                            "(a cube stays a cube); 180 degrees smooths every side")
+    use_marked_sharp: BoolProperty(name="Keep Marked Sharp", default=True,
+                                   description="Edges marked sharp (Edge > Mark Sharp) stay creases whatever the "
+                                               "Sharp Angle")
 
     @classmethod
     def poll(cls, context):
@@ -407,7 +410,8 @@ class OBJECT_OT_trimkit_mesh_to_tbp(bpy.types.Operator):
 
         def work(progress):
             progress(0.1)
-            return tbp_objects.mesh_to_tbp(context, source, self.levels, self.lod, self.sharp_angle)
+            return tbp_objects.mesh_to_tbp(context, source, self.levels, self.lod, self.sharp_angle,
+                                           self.use_marked_sharp)
         done = run_with_progress(self, context, work)
         if done is None:
             return {'CANCELLED'}

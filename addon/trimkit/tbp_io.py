@@ -233,12 +233,14 @@ def empty_part(name):
 TBP_SHARP_ANGLE = math.radians(30.0)
 
 
-def mesh_to_tbp(positions, triangles, name="", sharp_angle=TBP_SHARP_ANGLE):
+def mesh_to_tbp(positions, triangles, name="", sharp_angle=TBP_SHARP_ANGLE, sharp_edges=None):
     """Cubic PN-triangle TbpSolid of a closed, outward-oriented triangle mesh, sides
-    meeting at more than `sharp_angle` kept as creases (a cube stays a cube); ValueError
-    if the mesh has no triangles or open edges (it must bound a solid)."""
+    meeting at more than `sharp_angle`, and the sides `sharp_edges` ((k, 2) vertex
+    indices: the edges a user marked sharp), kept as creases (a cube stays a cube);
+    ValueError if the mesh has no triangles or open edges (it must bound a solid)."""
     positions = np.asarray(positions, np.float64).reshape(-1, 3)
     triangles = np.asarray(triangles, np.int32).reshape(-1, 3)
+    pairs = np.asarray(sharp_edges if sharp_edges is not None else [], np.int64).reshape(-1, 2)
     if len(triangles) == 0:
         raise ValueError("the mesh has no faces")
     mesh = native().Mesh(positions, triangles)
@@ -247,6 +249,6 @@ def mesh_to_tbp(positions, triangles, name="", sharp_angle=TBP_SHARP_ANGLE):
     open_edges = open_edge_count(welded)
     if open_edges:
         raise ValueError(f"the mesh is not closed ({open_edges} open edges): a TBP solid needs a closed mesh")
-    solid = native().pn_triangles(mesh, sharp_angle)
+    solid = native().pn_triangles(mesh, sharp_angle, [tuple(p) for p in pairs.tolist()])
     solid.name = name
     return solid

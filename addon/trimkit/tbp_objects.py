@@ -79,7 +79,8 @@ def import_tbp(context, filepath, levels, lod):
 
 
 def mesh_arrays(context, obj):
-    """(positions, triangles) of `obj`'s evaluated mesh (modifiers applied), local coordinates."""
+    """(positions, triangles, sharp edges) of `obj`'s evaluated mesh (modifiers applied),
+    local coordinates; sharp edges: (k, 2) vertex indices of the edges marked sharp."""
     evaluated = obj.evaluated_get(context.evaluated_depsgraph_get())
     me = evaluated.to_mesh()
     try:
@@ -88,17 +89,22 @@ def mesh_arrays(context, obj):
         me.vertices.foreach_get("co", positions)
         triangles = np.empty(3 * len(me.loop_triangles), np.int32)
         me.loop_triangles.foreach_get("vertices", triangles)
+        sharp = np.zeros(len(me.edges), bool)
+        me.edges.foreach_get("use_edge_sharp", sharp)
+        edges = np.empty(2 * len(me.edges), np.int32)
+        me.edges.foreach_get("vertices", edges)
     finally:
         evaluated.to_mesh_clear()
-    return positions.reshape(-1, 3), triangles.reshape(-1, 3)
+    return positions.reshape(-1, 3), triangles.reshape(-1, 3), edges.reshape(-1, 2)[sharp]
 
 
-def mesh_to_tbp(context, obj, levels, lod, sharp_angle=tbp_io.TBP_SHARP_ANGLE):
-    """A new TBP object (cubic PN triangles, creases above `sharp_angle` kept) from a
-    closed mesh object, with its transform; the source mesh is hidden."""
-    positions, triangles = mesh_arrays(context, obj)
+def mesh_to_tbp(context, obj, levels, lod, sharp_angle=tbp_io.TBP_SHARP_ANGLE, marked_sharp=True):
+    """A new TBP object (cubic PN triangles, creases above `sharp_angle` kept, and along
+    the edges marked sharp when `marked_sharp`) from a closed mesh object, with its
+    transform; the source mesh is hidden."""
+    positions, triangles, sharp_edges = mesh_arrays(context, obj)
     name = f"{obj.name} TBP"
-    solid = tbp_io.mesh_to_tbp(positions, triangles, name, sharp_angle)
+    solid = tbp_io.mesh_to_tbp(positions, triangles, name, sharp_angle, sharp_edges if marked_sharp else None)
     meshing = tbp_io.tbp_mesh(solid, levels, lod, name=name)
     file_name = f"{name}.tbp"
     text = stored_source.store(file_name, tbp_io.tbp_bytes(solid))

@@ -890,6 +890,40 @@ def test_tbp_cube_stays_a_cube_and_its_source_is_hidden():
     print(f"    Mesh to TBP of a cube: volume {volume:.6f} (8 exact); smoothed {smooth:.4f}")
 
 
+def solid_volume(obj):
+    """Volume of a closed mesh by the divergence theorem, in its local coordinates."""
+    me = obj.data
+    return sum(me.vertices[p.vertices[0]].co.dot(me.vertices[p.vertices[1]].co.cross(me.vertices[p.vertices[2]].co))
+               for p in me.polygons) / 6.0
+
+
+def test_tbp_cube_keeps_edges_marked_sharp_whatever_the_sharp_angle():
+    above = math.radians(100.0)  # the cube's sides meet at 90 degrees: none is sharp by angle
+    volumes = {}
+    for marked in (True, False):
+        empty_scene()
+        bpy.ops.mesh.primitive_cube_add(size=2.0)
+        cube = bpy.context.active_object
+        for e in cube.data.edges:
+            e.use_edge_sharp = marked
+        assert bpy.ops.object.trimkit_mesh_to_tbp(levels=1, lod=1, sharp_angle=above) == {'FINISHED'}
+        solid = bpy.context.active_object
+        assert solid != cube and solid.trimkit.faces == 12 and is_closed(solid)
+        volumes[marked] = solid_volume(solid)
+    assert abs(volumes[True] - 8.0) < 0.01 * 8.0, volumes  # a 2-unit cube: 2^3
+    assert volumes[False] > 1.1 * 8.0, volumes  # nothing marked: every side smoothed, the cube bulges
+    empty_scene()
+    bpy.ops.mesh.primitive_cube_add(size=2.0)
+    for e in bpy.context.active_object.data.edges:
+        e.use_edge_sharp = True
+    assert bpy.ops.object.trimkit_mesh_to_tbp(levels=1, lod=1, sharp_angle=above, use_marked_sharp=False) == \
+        {'FINISHED'}
+    ignored = solid_volume(bpy.context.active_object)
+    assert abs(ignored - volumes[False]) < 1e-9, (ignored, volumes)
+    print(f"    cube, sharp angle 100 deg: all edges marked sharp -> volume {volumes[True]:.6f} (8 exact); "
+          f"none marked {volumes[False]:.4f}; marks ignored {ignored:.4f}")
+
+
 def test_tbp_errors_cancel_and_leave_the_scene_unchanged():
     empty_scene()
     bpy.ops.mesh.primitive_plane_add()

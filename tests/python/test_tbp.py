@@ -179,6 +179,21 @@ def test_pn_icosphere_is_closed_and_trims_a_plane_to_a_hole():
           f"{untrimmed_area:.6f} -> {trim.area:.6f}")
 
 
+def test_sides_marked_sharp_are_creases_whatever_the_sharp_angle():
+    v, f = icosphere()
+    f = np.asarray(f)
+    sides = np.unique(np.sort(np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]]), axis=1), axis=0)
+    assert len(sides) == 30  # the icosahedron's edges
+    # every side marked, none sharp by angle (pi) = every side sharp by angle (0): flat patches
+    marked = tbp_io.mesh_to_tbp(v, f, "ico", sharp_angle=math.pi, sharp_edges=sides)
+    by_angle = tbp_io.mesh_to_tbp(v, f, "ico", sharp_angle=0.0)
+    smooth = tbp_io.mesh_to_tbp(v, f, "ico", sharp_angle=math.pi)
+    np.testing.assert_array_equal(marked.points, by_angle.points)
+    assert np.abs(marked.points - smooth.points).max() > 0.01
+    with pytest.raises(ValueError, match="sharp_edges"):
+        tbp_io.mesh_to_tbp(v, f, sharp_edges=[(0, len(v))])
+
+
 def test_open_mesh_is_refused():
     v, f = icosphere()
     with pytest.raises(ValueError, match="not closed"):
