@@ -353,13 +353,13 @@ def check_timing(meshes, total, seconds):
             f"other {max(0.0, total - read - check):.2f} s)")
 
 
-def levels_property(default=2):
-    return IntProperty(name="Levels", default=default, min=0, soft_max=4,
+def levels_property(default=2, options=None):
+    return IntProperty(name="Levels", default=default, min=0, soft_max=4, options=options or set(),
                        description="Hierarchy levels L: (lod+1)^L segments per patch edge")
 
 
-def lod_property(default=1):
-    return IntProperty(name="LOD", default=default, min=0, soft_max=7,
+def lod_property(default=1, options=None):
+    return IntProperty(name="LOD", default=default, min=0, soft_max=7, options=options or set(),
                        description="Subdivisions per level K: each node splits into (K+1)^2 subpatches")
 
 
@@ -426,8 +426,9 @@ class OBJECT_OT_trimkit_trim(bpy.types.Operator):
     bl_label = "Trim by TBP Solid"
     bl_options = {'REGISTER', 'UNDO'}
     keep: EnumProperty(name="Keep", items=properties.KEEP_ITEMS, default='outside')
-    levels: levels_property(2)
-    lod: lod_property(3)
+    # Not given (and not remembered from the last trim): the active object's own levels/lod.
+    levels: levels_property(2, {'SKIP_SAVE'})
+    lod: lod_property(1, {'SKIP_SAVE'})
 
     @staticmethod
     def tool(context):
@@ -438,8 +439,29 @@ class OBJECT_OT_trimkit_trim(bpy.types.Operator):
     def poll(cls, context):
         return tbp_objects.is_tbp(context.active_object) and cls.tool(context) is not None
 
+    def resolve_resolution(self, target):
+        """levels/lod not given: the target's own (tbp_objects.source_resolution)."""
+        levels, lod = tbp_objects.source_resolution(target)
+        if not self.properties.is_property_set("levels"):
+            self.levels = levels
+        if not self.properties.is_property_set("lod"):
+            self.lod = lod
+
+    def invoke(self, context, event):
+        """Above tbp_io.TBP_WARN_TRIANGLES estimated, asks before the work."""
+        self.resolve_resolution(context.active_object)
+        _, warning = tbp_objects.trim_estimate(context.active_object, self.levels, self.lod)
+        if warning:
+            return context.window_manager.invoke_confirm(self, event)
+        return self.execute(context)
+
     def execute(self, context):
         target, tool = context.active_object, self.tool(context)
+        self.resolve_resolution(target)
+        estimate, warning = tbp_objects.trim_estimate(target, self.levels, self.lod)
+        self.report({'INFO'}, f"{target.name}: {estimate}")
+        if warning:
+            self.report({'WARNING'}, warning)
 
         def work(progress):
             progress(0.1)

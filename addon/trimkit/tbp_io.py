@@ -18,6 +18,25 @@ from .io import EDGE_FACE_BOUNDARY, EDGE_SHARP, MeshPart, material_name, native
 from .uv_layout import normalize_uvs
 
 TBP_DEFAULT_ANGLE = np.radians(30.0)
+# Meshes of more triangles than this are reported with a warning before they are made.
+TBP_WARN_TRIANGLES = 500_000
+
+
+def tbp_triangle_estimate(patches, levels, lod):
+    """Triangles of `patches` patches polygonized at level L = `levels`, lod K = `lod`:
+    (K+1)^L segments per patch edge, so (K+1)^(2L) triangles a patch. A trim at that
+    resolution keeps the part of them on its side of the tool (and splits the cut ones)."""
+    return patches * (lod + 1) ** (2 * levels)
+
+
+def tbp_estimate_lines(what, patches, levels, lod):
+    """(the estimate, a warning or None) for `what` (an object's name) at levels/lod."""
+    count = tbp_triangle_estimate(patches, levels, lod)
+    line = f"estimate {count} triangles ({patches} patches at levels {levels}, lod {lod})"
+    if count <= TBP_WARN_TRIANGLES:
+        return line, None
+    return line, (f"{what}: {count} triangles at levels {levels}, lod {lod}, above {TBP_WARN_TRIANGLES}: "
+                  f"slow to make and heavy in the viewport; lower Levels or LOD")
 
 
 @dataclasses.dataclass

@@ -120,8 +120,21 @@ def tool_matrix(target, tool):
     return np.array(target.matrix_world.inverted() @ tool.matrix_world)
 
 
+def source_resolution(obj):
+    """(levels, lod) the TBP object `obj` was polygonized at: a trim of it at these is as
+    dense as it (rather than a fixed default, which can be many times denser)."""
+    return obj.trimkit.tbp_levels, obj.trimkit.tbp_lod
+
+
+def trim_estimate(target, levels, lod):
+    """tbp_io.tbp_estimate_lines of trimming `target` at levels/lod (before the work)."""
+    return tbp_io.tbp_estimate_lines(target.name, target.trimkit.faces, levels, lod)
+
+
 def trim(context, target, tool, keep, levels, lod):
-    """A new object: `target`'s patches trimmed against the solid of `tool`; returns (object, tbp_io.TbpTrim)."""
+    """A new object: `target`'s patches trimmed against the solid of `tool`; returns (object, tbp_io.TbpTrim).
+    The new object's trimkit.import_report holds the estimate (and the warning above
+    tbp_io.TBP_WARN_TRIANGLES)."""
     if not is_tbp(target) or not is_tbp(tool):
         raise ValueError("trim needs two TBP solid objects (import a .tbp or use Mesh to TBP)")
     if target == tool:
@@ -139,6 +152,7 @@ def trim(context, target, tool, keep, levels, lod):
     props.tool_name = tool.name
     props.tool_matrix = matrix.ravel().tolist()
     record(props, len(stored_solid(target.trimkit.source)), result.triangles, result.seconds)
+    props.import_report = "\n".join(line for line in trim_estimate(target, levels, lod) if line)
     target.hide_set(True)
     return obj, result
 
@@ -157,6 +171,8 @@ def remesh(obj):
         result = trim_solids(props.source, props.tool_source, matrix, props.keep, props.tbp_levels,
                              props.tbp_lod, obj.name)
         patches = len(stored_solid(props.source))
+        props.import_report = "\n".join(
+            line for line in tbp_io.tbp_estimate_lines(obj.name, patches, props.tbp_levels, props.tbp_lod) if line)
     else:
         result = tbp_io.tbp_mesh(stored_solid(props.source), props.tbp_levels, props.tbp_lod, name=obj.name)
         patches = result.patches

@@ -924,6 +924,56 @@ def test_tbp_cube_keeps_edges_marked_sharp_whatever_the_sharp_angle():
           f"none marked {volumes[False]:.4f}; marks ignored {ignored:.4f}")
 
 
+def tbp_estimate(patches, levels, lod):
+    """Triangles of `patches` polygonized at levels L, lod K: (K+1)^L segments per patch edge."""
+    return patches * (lod + 1) ** (2 * levels)
+
+
+def test_tbp_trim_follows_the_target_resolution_and_warns_above_500k_triangles():
+    empty_scene()
+    cube = import_tbp(tbp_cube_file(), 1, 1)
+    square = import_tbp(tbp_square_file(1.0), 2, 1)
+    square.location = (0.5, 0.5, 0.0)  # the cube cuts a hole in the middle (as in the saved-blend test)
+    bpy.context.view_layer.update()
+    source = len(square.data.polygons)
+    assert source == tbp_estimate(2, 2, 1) == 32, source
+    expected = (4.0 - 1.0) * TBP_SLOPE  # the square's area minus the cube's section
+    counts = {}
+    for levels, lod in ((None, None), (2, 3)):  # not given (the square's 2, 1); the former fixed default
+        square.hide_set(False)  # a trim hides its target
+        select_only([square, cube])
+        given = {} if levels is None else dict(levels=levels, lod=lod)
+        assert bpy.ops.object.trimkit_trim(keep='outside', **given) == {'FINISHED'}
+        trimmed = bpy.context.active_object
+        assert abs(mesh_area(trimmed) - expected) < 1e-5 * expected, (mesh_area(trimmed), expected)
+        counts[levels] = len(trimmed.data.polygons)
+        if levels is None:
+            assert (trimmed.trimkit.tbp_levels, trimmed.trimkit.tbp_lod) == (2, 1)
+            report = trimmed.trimkit.import_report
+            assert report == f"estimate {tbp_estimate(2, 2, 1)} triangles (2 patches at levels 2, lod 1)", report
+    density = (counts[None] / expected) / (source / (4.0 * TBP_SLOPE))
+    fixed = (counts[2] / expected) / (source / (4.0 * TBP_SLOPE))
+    assert density < 2.0 and fixed > 8.0, (counts, density, fixed)
+    # levels 3, lod 7: 8^3 segments per patch edge, 2 * 8^6 = 524288 triangles: a warning, and the
+    # (far, so untrimmed) square really has them
+    far = import_tbp(tbp_square_file(0.2), 1, 1)
+    far.location = (5.0, 0.0, 0.0)
+    bpy.context.view_layer.update()
+    square.hide_set(False)
+    select_only([square, far])
+    big = tbp_estimate(2, 3, 7)
+    assert big > 500000
+    assert bpy.ops.object.trimkit_trim(keep='outside', levels=3, lod=7) == {'FINISHED'}
+    dense = bpy.context.active_object
+    lines = dense.trimkit.import_report.splitlines()
+    assert lines[0].startswith(f"estimate {big} triangles"), lines
+    assert len(lines) == 2 and f"{big} triangles" in lines[1] and "above 500000" in lines[1], lines
+    assert len(dense.data.polygons) == big, len(dense.data.polygons)
+    print(f"    trim at the square's levels 2, lod 1: {counts[None]} triangles ({density:.2f}x its density; "
+          f"{fixed:.1f}x at the former fixed levels 2, lod 3); "
+          f"levels 3, lod 7: {lines[1]}")
+
+
 def test_tbp_errors_cancel_and_leave_the_scene_unchanged():
     empty_scene()
     bpy.ops.mesh.primitive_plane_add()
