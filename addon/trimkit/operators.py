@@ -367,7 +367,7 @@ class IMPORT_SCENE_OT_trimkit_tbp(bpy.types.Operator, ImportHelper):
     """Import a solid of triangular Bézier patches (.tbp) as a mesh at a level of detail; the solid is kept in the .blend"""
     bl_idname = "import_scene.trimkit_tbp"
     bl_label = "Import TBP (trimkit)"
-    bl_options = {'REGISTER', 'UNDO'}
+    bl_options = {'REGISTER', 'UNDO', 'PRESET'}  # presets/operator/import_scene.trimkit_tbp
     filename_ext = ".tbp"
     filter_glob: StringProperty(default="*.tbp", options={'HIDDEN'})
     levels: levels_property()

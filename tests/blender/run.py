@@ -890,6 +890,25 @@ def test_tbp_cube_stays_a_cube_and_its_source_is_hidden():
     print(f"    Mesh to TBP of a cube: volume {volume:.6f} (8 exact); smoothed {smooth:.4f}")
 
 
+def test_tbp_import_presets_set_levels_and_lod():
+    import types
+    presets = bpy.utils.preset_paths("operator/import_scene.trimkit_tbp")
+    files = {p.name: p for folder in presets for p in pathlib.Path(folder).glob("*.py")}
+    assert {"Preview.py", "Render.py", "Export.py"} <= set(files), files
+    assert 'PRESET' in bpy.types.IMPORT_SCENE_OT_trimkit_tbp.bl_options
+    counts = {}
+    for name in ("Preview.py", "Render.py", "Export.py"):
+        operator = types.SimpleNamespace()  # what the preset menu gives the file: the file browser's operator
+        text = files[name].read_text().replace("bpy.context.active_operator", "operator")
+        exec(compile(text, name, "exec"), {"operator": operator})
+        empty_scene()
+        cube = import_tbp(tbp_cube_file(), operator.levels, operator.lod)
+        counts[name] = len(cube.data.polygons)
+        assert counts[name] == 12 * (operator.lod + 1) ** (2 * operator.levels), (name, counts[name])
+        assert is_closed(cube)
+    assert counts["Preview.py"] < counts["Export.py"] < counts["Render.py"], counts
+    print(f"    TBP presets on the 12-patch cube: " + ", ".join(f"{n[:-3]} {c}" for n, c in counts.items()))
+
 def solid_volume(obj):
     """Volume of a closed mesh by the divergence theorem, in its local coordinates."""
     me = obj.data
