@@ -448,12 +448,26 @@ class OBJECT_OT_trimkit_trim(bpy.types.Operator):
             self.lod = lod
 
     def invoke(self, context, event):
-        """Above tbp_io.TBP_WARN_TRIANGLES estimated, asks before the work."""
+        """Above tbp_io.TBP_WARN_TRIANGLES estimated, asks before the work (a dialog with
+        the estimate and the warning, where Levels and LOD can be lowered)."""
         self.resolve_resolution(context.active_object)
         _, warning = tbp_objects.trim_estimate(context.active_object, self.levels, self.lod)
         if warning:
-            return context.window_manager.invoke_confirm(self, event)
+            return context.window_manager.invoke_props_dialog(self, width=560)
         return self.execute(context)
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_split = True
+        for name in ("keep", "levels", "lod"):
+            layout.prop(self, name)
+        target = context.active_object
+        if tbp_objects.is_tbp(target):
+            estimate, warning = tbp_objects.trim_estimate(target, self.levels, self.lod)
+            col = layout.column(align=True)
+            col.label(text=estimate, icon='INFO')
+            if warning:
+                col.label(text=warning, icon='ERROR')
 
     def execute(self, context):
         target, tool = context.active_object, self.tool(context)

@@ -35,8 +35,7 @@ def tbp_estimate_lines(what, patches, levels, lod):
     line = f"estimate {count} triangles ({patches} patches at levels {levels}, lod {lod})"
     if count <= TBP_WARN_TRIANGLES:
         return line, None
-    return line, (f"{what}: {count} triangles at levels {levels}, lod {lod}, above {TBP_WARN_TRIANGLES}: "
-                  f"slow to make and heavy in the viewport; lower Levels or LOD")
+    return line, f"{what}: {count} triangles, above {TBP_WARN_TRIANGLES}: slow and heavy; lower Levels or LOD"
 
 
 @dataclasses.dataclass

@@ -993,6 +993,37 @@ def test_tbp_trim_follows_the_target_resolution_and_warns_above_500k_triangles()
           f"levels 3, lod 7: {lines[1]}")
 
 
+def test_tbp_trim_asks_before_a_trim_above_500k_triangles_when_invoked():
+    """INVOKE_DEFAULT in a Blender window under Xvfb (tests/blender/tbp_trim_confirm.py):
+    above the estimate limit the trim asks and changes nothing (Esc), below it runs at once."""
+    xvfb, _ = xvfb_and_assembly()
+    folder = TMP / "confirm"
+    folder.mkdir(parents=True, exist_ok=True)
+    files = {}
+    for key, path in (("cube", tbp_cube_file()), ("far", tbp_square_file(0.2)), ("square", tbp_square_file(1.0))):
+        files[key] = folder / f"{key}.tbp"
+        shutil.copyfile(path, files[key])  # tbp_square_file writes one square.tbp
+    empty_scene()
+    start = folder / "start.blend"  # opening a file skips the splash screen
+    assert bpy.ops.wm.save_as_mainfile(filepath=str(start)) == {'FINISHED'}
+    command = [xvfb, "-a", "-s", "-screen 0 1280x800x24", bpy.app.binary_path, "--factory-startup",
+               "--enable-event-simulate", "-p", "0", "0", "1280", "800", str(start),
+               "--python", str(ROOT / "tests" / "blender" / "tbp_trim_confirm.py"), "--",
+               "--cube", str(files["cube"]), "--square", str(files["square"]), "--far", str(files["far"]),
+               "--out", ARGS.out]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    lines = [l for l in run.stdout.splitlines() if l.startswith("confirm:")]
+    assert run.returncode == 0 and "confirm: done" in lines, (run.returncode, run.stdout[-3000:], run.stderr[-2000:])
+    import numpy as np
+    for name in ("confirm_trim.png", "tbp_trim_panel.png"):
+        image = bpy.data.images.load(str(pathlib.Path(ARGS.out) / name))
+        pixels = np.empty(4 * image.size[0] * image.size[1], np.float32)
+        image.pixels.foreach_get(pixels)
+        assert min(image.size) >= 200 and pixels.reshape(-1, 4)[:, :3].std(axis=0).max() > 0.05, (name, image.size)
+        lines.append(f"confirm: {name} {image.size[0]}x{image.size[1]}")
+        bpy.data.images.remove(image)
+    print("    " + "\n    ".join(l for l in lines if l != "confirm: done"))
+
 def test_tbp_errors_cancel_and_leave_the_scene_unchanged():
     empty_scene()
     bpy.ops.mesh.primitive_plane_add()
