@@ -1102,6 +1102,31 @@ def test_batch_converts_two_files_to_glb_and_blend():
         print(f"    batch {suffix}: " + " | ".join(lines))
 
 
+def test_batch_origin_box_puts_each_origin_at_its_box_centre():
+    import numpy as np
+    centres = {}
+    for origin in ("FILE", "BOX"):
+        out = TMP / f"batch_origin_{origin}.blend"
+        run = run_batch("--input", BRACKET, "--tolerance", "0.001", "--relative", "--split", "FACE",
+                        "--origin", origin, "--output", out)
+        assert run.returncode == 0, run.stderr[-2000:]
+        with bpy.data.libraries.load(str(out)) as (source, target):
+            target.objects = list(source.objects)
+        for obj in target.objects:
+            world = world_vertices(obj)
+            centres[origin, obj.trimkit.part_index] = ((world.min(0) + world.max(0)) / 2, world,
+                                                       np.array(obj.matrix_world.translation))
+            bpy.data.objects.remove(obj)
+    assert sorted(centres) == [("BOX", 0), ("BOX", 1), ("FILE", 0), ("FILE", 1)], sorted(centres)
+    for name in (0, 1):  # the bracket's two CAD faces
+        box_centre, box_world, box_origin = centres["BOX", name]
+        _, file_world, file_origin = centres["FILE", name]
+        assert np.abs(box_world - file_world).max() < 1e-6, name  # the same world positions
+        assert np.abs(box_origin - box_centre).max() < 1e-6 and np.abs(file_origin).max() == 0.0, \
+            (name, box_origin, box_centre)
+    print(f"    batch --origin BOX: bracket faces' origins at their box centres, "
+          f"e.g. {np.round(box_origin * 1000, 3).tolist()} mm; world vertices as with FILE")
+
 def test_batch_fails_clearly_on_a_damaged_file():
     damaged = TMP / "broken.igs"
     damaged.write_text("not an IGES file\n")
