@@ -300,6 +300,9 @@ class OBJECT_OT_trimkit_retessellate(bpy.types.Operator):
         for result in results:
             for face, reason in result.failed_faces:
                 self.report({'WARNING'}, f"face {face} not meshed: {reason}")
+        for obj in objects:
+            if obj.trimkit.kind != 'CAD':
+                report_tbp_warning(self, obj)
         triangles = sum(o.trimkit.triangles for o in objects)
         self.report({'INFO'}, f"{len(objects)} objects re-meshed, {triangles} triangles")
         return {'FINISHED'}
@@ -353,6 +356,12 @@ def check_timing(meshes, total, seconds):
             f"other {max(0.0, total - read - check):.2f} s)")
 
 
+def report_tbp_warning(operator, obj):
+    """The warning of a TBP object's triangle estimate (the second line of its import_report), if any."""
+    for line in obj.trimkit.import_report.splitlines()[1:]:
+        operator.report({'WARNING'}, line)
+
+
 def levels_property(default=2, options=None):
     return IntProperty(name="Levels", default=default, min=0, soft_max=4, options=options or set(),
                        description="Hierarchy levels L: (lod+1)^L segments per patch edge")
@@ -381,6 +390,7 @@ class IMPORT_SCENE_OT_trimkit_tbp(bpy.types.Operator, ImportHelper):
         if done is None:
             return {'CANCELLED'}
         obj, meshing = done
+        report_tbp_warning(self, obj)
         self.report({'INFO'}, f"{obj.name}: {meshing.patches} patches, {meshing.triangles} triangles, "
                               f"{meshing.open_edges} open edges in {meshing.seconds:.2f} s")
         return {'FINISHED'}
@@ -416,6 +426,7 @@ class OBJECT_OT_trimkit_mesh_to_tbp(bpy.types.Operator):
         if done is None:
             return {'CANCELLED'}
         obj, meshing = done
+        report_tbp_warning(self, obj)
         self.report({'INFO'}, f"{obj.name}: {meshing.patches} PN patches, {meshing.triangles} triangles")
         return {'FINISHED'}
 

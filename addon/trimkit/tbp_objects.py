@@ -65,16 +65,25 @@ def set_tbp_props(obj, text, name, levels, lod, kind='TBP'):
     props.tbp_lod = lod
 
 
+def estimate_report(name, patches, levels, lod):
+    """The triangle estimate at levels/lod, and the warning above tbp_io.TBP_WARN_TRIANGLES
+    on a second line (Object.trimkit.import_report of TBP objects)."""
+    return "\n".join(line for line in tbp_io.tbp_estimate_lines(name, patches, levels, lod) if line)
+
+
 def import_tbp(context, filepath, levels, lod):
-    """A new object polygonized from a .tbp file; returns (object, tbp_io.TbpMeshing)."""
+    """A new object polygonized from a .tbp file; returns (object, tbp_io.TbpMeshing).
+    Its trimkit.import_report holds the estimate (estimate_report)."""
     path = pathlib.Path(filepath)
     solid, data = tbp_io.read_tbp_source(path)
     name = solid.name or path.stem
+    report = estimate_report(name, len(solid), levels, lod)  # before the work
     meshing = tbp_io.tbp_mesh(solid, levels, lod, name=name)
     text = stored_source.store(path.name, data)
     obj = link_new(context, name, meshing.part)
     set_tbp_props(obj, text, path.name, levels, lod)
     record(obj.trimkit, meshing.patches, meshing.triangles, meshing.seconds)
+    obj.trimkit.import_report = report
     return obj, meshing
 
 
@@ -105,12 +114,14 @@ def mesh_to_tbp(context, obj, levels, lod, sharp_angle=tbp_io.TBP_SHARP_ANGLE, m
     positions, triangles, sharp_edges = mesh_arrays(context, obj)
     name = f"{obj.name} TBP"
     solid = tbp_io.mesh_to_tbp(positions, triangles, name, sharp_angle, sharp_edges if marked_sharp else None)
+    report = estimate_report(name, len(solid), levels, lod)
     meshing = tbp_io.tbp_mesh(solid, levels, lod, name=name)
     file_name = f"{name}.tbp"
     text = stored_source.store(file_name, tbp_io.tbp_bytes(solid))
     new = link_new(context, name, meshing.part, obj.matrix_world.copy())
     set_tbp_props(new, text, file_name, levels, lod)
     record(new.trimkit, meshing.patches, meshing.triangles, meshing.seconds)
+    new.trimkit.import_report = report
     obj.hide_set(True)
     return new, meshing
 
@@ -152,7 +163,7 @@ def trim(context, target, tool, keep, levels, lod):
     props.tool_name = tool.name
     props.tool_matrix = matrix.ravel().tolist()
     record(props, len(stored_solid(target.trimkit.source)), result.triangles, result.seconds)
-    props.import_report = "\n".join(line for line in trim_estimate(target, levels, lod) if line)
+    props.import_report = estimate_report(target.name, target.trimkit.faces, levels, lod)
     target.hide_set(True)
     return obj, result
 
@@ -171,11 +182,10 @@ def remesh(obj):
         result = trim_solids(props.source, props.tool_source, matrix, props.keep, props.tbp_levels,
                              props.tbp_lod, obj.name)
         patches = len(stored_solid(props.source))
-        props.import_report = "\n".join(
-            line for line in tbp_io.tbp_estimate_lines(obj.name, patches, props.tbp_levels, props.tbp_lod) if line)
     else:
         result = tbp_io.tbp_mesh(stored_solid(props.source), props.tbp_levels, props.tbp_lod, name=obj.name)
         patches = result.patches
+    props.import_report = estimate_report(obj.name, patches, props.tbp_levels, props.tbp_lod)
     blender_mesh.replace_mesh(obj, result.part, props.smooth, props.exact_normals)
     record(props, patches, result.triangles, result.seconds)
     return result

@@ -993,6 +993,28 @@ def test_tbp_trim_follows_the_target_resolution_and_warns_above_500k_triangles()
           f"levels 3, lod 7: {lines[1]}")
 
 
+def test_tbp_import_mesh_to_tbp_and_remesh_estimate_their_triangles_and_warn_above_500k():
+    empty_scene()
+    cube = import_tbp(tbp_cube_file(), 2, 1)
+    assert cube.trimkit.import_report == f"estimate {tbp_estimate(12, 2, 1)} triangles (12 patches at levels 2, lod 1)"
+    assert len(cube.data.polygons) == tbp_estimate(12, 2, 1) == 192
+    square = import_tbp(tbp_square_file(), 3, 7)  # 2 patches, 8^3 segments an edge
+    big = tbp_estimate(2, 3, 7)
+    lines = square.trimkit.import_report.splitlines()
+    assert len(square.data.polygons) == big > 500000 and len(lines) == 2, (len(square.data.polygons), lines)
+    assert f"{big} triangles, above 500000" in lines[1], lines
+    square.trimkit.tbp_levels, square.trimkit.tbp_lod = 2, 1
+    select_only([square])
+    assert bpy.ops.object.trimkit_retessellate() == {'FINISHED'}
+    assert square.trimkit.import_report == "estimate 32 triangles (2 patches at levels 2, lod 1)", \
+        square.trimkit.import_report
+    bpy.ops.mesh.primitive_cube_add(size=2.0)
+    assert bpy.ops.object.trimkit_mesh_to_tbp(levels=1, lod=1) == {'FINISHED'}
+    solid = bpy.context.active_object
+    assert solid.trimkit.import_report == f"estimate {tbp_estimate(12, 1, 1)} triangles (12 patches at levels 1, lod 1)"
+    print(f"    estimates: cube {cube.trimkit.import_report}; square at levels 3, lod 7: {lines[1]}; "
+          f"re-meshed: {square.trimkit.import_report}; Mesh to TBP: {solid.trimkit.import_report}")
+
 def test_tbp_trim_asks_before_a_trim_above_500k_triangles_when_invoked():
     """INVOKE_DEFAULT in a Blender window under Xvfb (tests/blender/tbp_trim_confirm.py):
     above the estimate limit the trim asks and changes nothing (Esc), below it runs at once."""
