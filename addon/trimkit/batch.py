@@ -42,7 +42,7 @@ def ensure_registered():
 
 def convert(inputs, output, tolerance, relative=False, angle=math.degrees(DEFAULTS.angle), mode=DEFAULTS.mode,
             trim_method=DEFAULTS.trim_method, split=DEFAULTS.split, clear_scene=True, report=print,
-            units=DEFAULTS.units, uv_mode=DEFAULTS.uv_mode, lods=0, lod_factor=4.0):
+            units=DEFAULTS.units, uv_mode=DEFAULTS.uv_mode, lods=0, lod_factor=4.0, origin=DEFAULTS.origin):
     """Converts CAD files to one output (.blend, .glb or .obj).
 
     tolerance: in the files' units, or a fraction of each model's diagonal when
@@ -52,6 +52,7 @@ def convert(inputs, output, tolerance, relative=False, angle=math.degrees(DEFAUL
     output is written. units: what the files' numbers are ("FILE": their declared
     unit, or MM, CM, M, INCH). lods: with N > 1 (.blend only), each object also gets
     the chain <name>_LOD0.._LOD{N-1} at tolerances growing by lod_factor (lods.py).
+    origin (.blend only): "FILE" (the file's) or "BOX" (each object's at its part's box centre).
     """
     output = pathlib.Path(output)
     suffix = output.suffix.lower()
@@ -69,7 +70,8 @@ def convert(inputs, output, tolerance, relative=False, angle=math.degrees(DEFAUL
             if suffix == ".blend":
                 settings = importer.ImportSettings(relative=relative, relative_tolerance=tolerance,
                                                    angle=math.radians(angle), mode=mode, units=units,
-                                                   trim_method=trim_method, split=split, uv_mode=uv_mode)
+                                                   trim_method=trim_method, split=split, uv_mode=uv_mode,
+                                                   origin=origin)
                 model, _ = io.read_source(path)
                 scale = importer.scene_scale(model, bpy.context.scene, 0.0, units)
                 settings.tolerance = tolerance * scale
@@ -130,6 +132,8 @@ def parse(argv):
     parser.add_argument("--lods", type=int, default=0, metavar="N",
                         help="also make N levels of detail <name>_LOD0.. per object (.blend output)")
     parser.add_argument("--lod-factor", type=float, default=4.0, help="tolerance factor between levels")
+    parser.add_argument("--origin", choices=["FILE", "BOX"], default=DEFAULTS.origin,
+                        help="object origins (.blend output): the file's, or each part's bounding-box centre")
     return parser.parse_args(argv)
 
 
@@ -139,7 +143,7 @@ def main():
     try:
         convert(args.input, args.output, args.tolerance, relative=args.relative, angle=args.angle,
                 mode=args.mode, trim_method=args.trim_method, split=args.split, units=args.units,
-                uv_mode=args.uvs, lods=args.lods, lod_factor=args.lod_factor)
+                uv_mode=args.uvs, lods=args.lods, lod_factor=args.lod_factor, origin=args.origin)
     except (RuntimeError, ValueError, OSError, ImportError) as err:
         print(f"trimkit batch: {err}", file=sys.stderr)
         sys.exit(1)

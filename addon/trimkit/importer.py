@@ -153,13 +153,18 @@ def link_file(context, prepared, settings, progress=None):
     assemblies = {(): collection}
     objects = []
     for k, part in enumerate(result.parts):
-        me = blender_mesh.create_mesh(part, smooth=settings.smooth, exact_normals=settings.exact_normals)
+        offset = origin_offset(part, settings.origin)
+        me = blender_mesh.create_mesh(shifted(part, offset), part.name, smooth=settings.smooth,
+                                      exact_normals=settings.exact_normals)
         for name, matrix, tree in object_placements(part, placements):
             obj = bpy.data.objects.new(name, me)
             assembly_collection(assemblies, tree).objects.link(obj)
-            if matrix is not None:
-                obj.matrix_world = mathutils.Matrix(matrix.tolist())
+            # the part's coordinates to the scene's, then the origin moved to `offset` in them
+            placed = mathutils.Matrix(matrix.tolist()) if matrix is not None else mathutils.Matrix.Identity(4)
+            if matrix is not None or offset.any():
+                obj.matrix_world = placed @ mathutils.Matrix.Translation(offset.tolist())
             store_settings(obj.trimkit, text, path.name, part, scale, result, settings)
+            obj.trimkit.origin = offset.tolist()
             write_metadata(obj, path, model, settings.units, name)
             objects.append(obj)
         if progress:
@@ -170,6 +175,22 @@ def link_file(context, prepared, settings, progress=None):
         obj.trimkit.import_report = "\n".join([line] + warnings)
         obj.trimkit.import_timing = timing
     return objects, result, [line] + warnings, timing
+
+
+def origin_offset(part, origin):
+    """(3,) where the object origin of `part` goes in the part's coordinates (Blender
+    units): zero for File Origin, the centre of the part's bounding box for Part Box Centre."""
+    if origin != 'BOX' or len(part.positions) == 0:
+        return np.zeros(3)
+    return 0.5 * (part.positions.min(axis=0) + part.positions.max(axis=0))
+
+
+def shifted(part, offset):
+    """`part` with its positions less `offset` (the mesh of an object whose origin is there)."""
+    offset = np.asarray(offset, np.float64)
+    if not offset.any():
+        return part
+    return dataclasses.replace(part, positions=part.positions - offset)
 
 
 def write_metadata(obj, path, model, units, product):
@@ -373,7 +394,8 @@ def remesh_part(objects, part, result, render):
     for obj in objects:
         sharing.setdefault(obj.data.as_pointer(), []).append(obj)
     for users in sharing.values():
-        blender_mesh.replace_shared_mesh(users, part, users[0].trimkit.smooth, users[0].trimkit.exact_normals)
+        blender_mesh.replace_shared_mesh(users, shifted(part, users[0].trimkit.origin), users[0].trimkit.smooth,
+                                         users[0].trimkit.exact_normals)
     if render:
         return
     for obj in objects:

@@ -8,7 +8,7 @@ import bpy
 from . import blender_mesh, importer, io, stored_source, uv_layout
 
 # Object.trimkit fields an LOD takes from its source.
-COPIED = ("source", "source_name", "kind", "part", "part_index", "scale", "units", "angle", "mode",
+COPIED = ("source", "source_name", "kind", "part", "part_index", "scale", "origin", "units", "angle", "mode",
           "trim_method", "smooth", "exact_normals", "uv_mode")
 
 
@@ -32,7 +32,8 @@ def make_lods(context, obj, count, factor=4.0):
         part = result.parts[0]
         layout = layout or part.uv_layout
         lod = lod_object(context, obj, level)
-        me = blender_mesh.create_mesh(part, lod_name(obj, level), props.smooth, props.exact_normals)
+        me = blender_mesh.create_mesh(importer.shifted(part, props.origin), lod_name(obj, level), props.smooth,
+                                      props.exact_normals)
         blender_mesh.carry_over(obj.data, me)
         old = lod.data
         lod.data = me

@@ -81,7 +81,7 @@ def check_object(obj, seconds=None):
     faces = io.part_faces(model, props.part, props.part_index)
     faces = list(range(len(model.faces))) if faces is None else faces
     tolerance = props.tolerance / props.scale
-    model_positions = positions / props.scale
+    model_positions = (positions + np.asarray(props.origin, np.float32)) / props.scale  # origin: Part Box Centre
     triangle_faces = cad_face[polygons]
     if len(triangles):
         report = io.measure(model, model_positions, triangles, triangle_faces, faces)

@@ -11,7 +11,7 @@ import time
 from bpy.props import BoolProperty, CollectionProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
 from bpy_extras.io_utils import ExportHelper, ImportHelper
 
-from . import cad_faces, importer, io, lods, mesh_check, modal_work, properties, stored_source, tbp_objects
+from . import cad_faces, importer, io, lods, mesh_check, modal_work, properties, stored_source, tbp_io, tbp_objects
 from .settings import DEFAULTS
 
 SPLIT_ITEMS = [
@@ -40,6 +40,8 @@ class ImportCadBase(ImportHelper, modal_work.ModalWork):
     units: EnumProperty(name="Units", items=properties.UNIT_ITEMS, default=DEFAULTS.units,
                         description="What the file's numbers are: the unit it declares, or one you choose")
     split: EnumProperty(name="Objects", items=SPLIT_ITEMS, default=DEFAULTS.split)
+    origin: EnumProperty(name="Origin", items=properties.ORIGIN_ITEMS, default=DEFAULTS.origin,
+                         description="Where each object's origin goes: the file's, or its part's box centre")
     smooth: BoolProperty(name="Smooth Shading", default=DEFAULTS.smooth,
                          description="Smooth shading with custom normals from the exact surface")
     exact_normals: BoolProperty(name="Exact Normals", default=DEFAULTS.exact_normals,
@@ -66,7 +68,7 @@ class ImportCadBase(ImportHelper, modal_work.ModalWork):
         return importer.ImportSettings(
             tolerance=self.tolerance, relative=self.relative, relative_tolerance=self.relative_tolerance,
             angle=self.angle, mode=self.mode, trim_method=self.trim_method, units=self.units,
-            split=self.split, smooth=self.smooth, exact_normals=self.exact_normals, uv_mode=self.uv_mode,
+            split=self.split, origin=self.origin, smooth=self.smooth, exact_normals=self.exact_normals, uv_mode=self.uv_mode,
             read_timeout=self.read_timeout, face_timeout=self.face_timeout)
 
     def paths(self):
@@ -172,7 +174,7 @@ class IMPORT_PT_trimkit_units(TrimkitImportPanel, bpy.types.Panel):
 
 class IMPORT_PT_trimkit_objects(TrimkitImportPanel, bpy.types.Panel):
     bl_label = "Objects"
-    properties = ("split",)
+    properties = ("split", "origin")
 
 
 class IMPORT_PT_trimkit_shading(TrimkitImportPanel, bpy.types.Panel):
@@ -298,6 +300,9 @@ class OBJECT_OT_trimkit_retessellate(bpy.types.Operator):
         for result in results:
             for face, reason in result.failed_faces:
                 self.report({'WARNING'}, f"face {face} not meshed: {reason}")
+        for obj in objects:
+            if obj.trimkit.kind != 'CAD':
+                report_tbp_warning(self, obj)
         triangles = sum(o.trimkit.triangles for o in objects)
         self.report({'INFO'}, f"{len(objects)} objects re-meshed, {triangles} triangles")
         return {'FINISHED'}
@@ -351,13 +356,19 @@ def check_timing(meshes, total, seconds):
             f"other {max(0.0, total - read - check):.2f} s)")
 
 
-def levels_property(default=2):
-    return IntProperty(name="Levels", default=default, min=0, soft_max=4,
+def report_tbp_warning(operator, obj):
+    """The warning of a TBP object's triangle estimate (the second line of its import_report), if any."""
+    for line in obj.trimkit.import_report.splitlines()[1:]:
+        operator.report({'WARNING'}, line)
+
+
+def levels_property(default=2, options=None):
+    return IntProperty(name="Levels", default=default, min=0, soft_max=4, options=options or set(),
                        description="Hierarchy levels L: (lod+1)^L segments per patch edge")
 
 
-def lod_property(default=1):
-    return IntProperty(name="LOD", default=default, min=0, soft_max=7,
+def lod_property(default=1, options=None):
+    return IntProperty(name="LOD", default=default, min=0, soft_max=7, options=options or set(),
                        description="Subdivisions per level K: each node splits into (K+1)^2 subpatches")
 
 
@@ -365,7 +376,7 @@ class IMPORT_SCENE_OT_trimkit_tbp(bpy.types.Operator, ImportHelper):
     """Import a solid of triangular Bézier patches (.tbp) as a mesh at a level of detail; the solid is kept in the .blend"""
     bl_idname = "import_scene.trimkit_tbp"
     bl_label = "Import TBP (trimkit)"
-    bl_options = {'REGISTER', 'UNDO'}
+    bl_options = {'REGISTER', 'UNDO', 'PRESET'}  # presets/operator/import_scene.trimkit_tbp
     filename_ext = ".tbp"
     filter_glob: StringProperty(default="*.tbp", options={'HIDDEN'})
     levels: levels_property()
@@ -379,6 +390,7 @@ class IMPORT_SCENE_OT_trimkit_tbp(bpy.types.Operator, ImportHelper):
         if done is None:
             return {'CANCELLED'}
         obj, meshing = done
+        report_tbp_warning(self, obj)
         self.report({'INFO'}, f"{obj.name}: {meshing.patches} patches, {meshing.triangles} triangles, "
                               f"{meshing.open_edges} open edges in {meshing.seconds:.2f} s")
         return {'FINISHED'}
@@ -391,9 +403,12 @@ class OBJECT_OT_trimkit_mesh_to_tbp(bpy.types.Operator):
     bl_options = {'REGISTER', 'UNDO'}
     levels: levels_property(1)
     lod: lod_property(1)
-    sharp_angle: FloatProperty(name="Sharp Angle", default=io.TBP_SHARP_ANGLE, min=0.0, max=math.pi, subtype='ANGLE',
+    sharp_angle: FloatProperty(name="Sharp Angle", default=tbp_io.TBP_SHARP_ANGLE, min=0.0, max=math.pi, subtype='ANGLE',
                                description="Sides whose faces meet at more than this stay sharp creases of the solid "
                                            "(a cube stays a cube); 180 degrees smooths every side")
+    use_marked_sharp: BoolProperty(name="Keep Marked Sharp", default=True,
+                                   description="Edges marked sharp (Edge > Mark Sharp) stay creases whatever the "
+                                               "Sharp Angle")
 
     @classmethod
     def poll(cls, context):
@@ -405,11 +420,13 @@ class OBJECT_OT_trimkit_mesh_to_tbp(bpy.types.Operator):
 
         def work(progress):
             progress(0.1)
-            return tbp_objects.mesh_to_tbp(context, source, self.levels, self.lod, self.sharp_angle)
+            return tbp_objects.mesh_to_tbp(context, source, self.levels, self.lod, self.sharp_angle,
+                                           self.use_marked_sharp)
         done = run_with_progress(self, context, work)
         if done is None:
             return {'CANCELLED'}
         obj, meshing = done
+        report_tbp_warning(self, obj)
         self.report({'INFO'}, f"{obj.name}: {meshing.patches} PN patches, {meshing.triangles} triangles")
         return {'FINISHED'}
 
@@ -420,8 +437,9 @@ class OBJECT_OT_trimkit_trim(bpy.types.Operator):
     bl_label = "Trim by TBP Solid"
     bl_options = {'REGISTER', 'UNDO'}
     keep: EnumProperty(name="Keep", items=properties.KEEP_ITEMS, default='outside')
-    levels: levels_property(2)
-    lod: lod_property(3)
+    # Not given (and not remembered from the last trim): the active object's own levels/lod.
+    levels: levels_property(2, {'SKIP_SAVE'})
+    lod: lod_property(1, {'SKIP_SAVE'})
 
     @staticmethod
     def tool(context):
@@ -432,8 +450,43 @@ class OBJECT_OT_trimkit_trim(bpy.types.Operator):
     def poll(cls, context):
         return tbp_objects.is_tbp(context.active_object) and cls.tool(context) is not None
 
+    def resolve_resolution(self, target):
+        """levels/lod not given: the target's own (tbp_objects.source_resolution)."""
+        levels, lod = tbp_objects.source_resolution(target)
+        if not self.properties.is_property_set("levels"):
+            self.levels = levels
+        if not self.properties.is_property_set("lod"):
+            self.lod = lod
+
+    def invoke(self, context, event):
+        """Above tbp_io.TBP_WARN_TRIANGLES estimated, asks before the work (a dialog with
+        the estimate and the warning, where Levels and LOD can be lowered)."""
+        self.resolve_resolution(context.active_object)
+        _, warning = tbp_objects.trim_estimate(context.active_object, self.levels, self.lod)
+        if warning:
+            return context.window_manager.invoke_props_dialog(self, width=560)
+        return self.execute(context)
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_split = True
+        for name in ("keep", "levels", "lod"):
+            layout.prop(self, name)
+        target = context.active_object
+        if tbp_objects.is_tbp(target):
+            estimate, warning = tbp_objects.trim_estimate(target, self.levels, self.lod)
+            col = layout.column(align=True)
+            col.label(text=estimate, icon='INFO')
+            if warning:
+                col.label(text=warning, icon='ERROR')
+
     def execute(self, context):
         target, tool = context.active_object, self.tool(context)
+        self.resolve_resolution(target)
+        estimate, warning = tbp_objects.trim_estimate(target, self.levels, self.lod)
+        self.report({'INFO'}, f"{target.name}: {estimate}")
+        if warning:
+            self.report({'WARNING'}, warning)
 
         def work(progress):
             progress(0.1)

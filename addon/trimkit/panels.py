@@ -74,6 +74,8 @@ class OBJECT_PT_trimkit(bpy.types.Panel):
         layout.operator("object.trimkit_retessellate", text="Re-mesh", icon='FILE_REFRESH')
         box = layout.box()
         box.label(text=f"{props.faces} patches, {props.triangles} triangles, {props.seconds:.2f} s")
+        for k, line in enumerate(props.import_report.splitlines()):  # the triangle estimate, and its warning
+            box.label(text=line, icon='INFO' if k == 0 else 'ERROR')
 
 
 def draw_import_report(layout, report):

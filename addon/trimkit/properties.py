@@ -38,6 +38,11 @@ UV_ITEMS = [
                                  "one island per CAD face, packed without overlap"),
     ('FACE', "Per Face 0-1", "Each CAD face's surface parameters stretched to 0-1 (islands overlap)"),
 ]
+ORIGIN_ITEMS = [
+    ('FILE', "File Origin", "Each object's origin where the file puts its part's origin (the file's zero)"),
+    ('BOX', "Part Box Centre", "Each object's origin at the centre of its part's bounding box, the mesh "
+                               "shifted so that it stays where the file puts it"),
+]
 PART_ITEMS = [
     ('MODEL', "Model", "All faces (or the faces in no body)"),
     ('BODY', "Body", "One body"),
@@ -73,6 +78,9 @@ class TRIMKIT_PG_object(bpy.types.PropertyGroup):
     part: EnumProperty(name="Part", items=PART_ITEMS, default='MODEL')
     part_index: IntProperty(name="Part Index", default=-1)
     scale: FloatProperty(name="Scale", description="Model units to Blender units", default=1.0, min=0.0)
+    origin: FloatVectorProperty(name="Origin Offset", size=3, default=(0.0, 0.0, 0.0), subtype='TRANSLATION',
+                                description="Where the object's origin is in its part's coordinates (Blender "
+                                            "units): the mesh is the part's minus this (Part Box Centre origins)")
 
     tolerance: tolerance_property("Tolerance", "Largest distance from the mesh to the exact surface (viewport)",
                                   DEFAULTS.tolerance)

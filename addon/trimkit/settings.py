@@ -18,6 +18,7 @@ class ImportSettings:
     units: str = "FILE"               # what the file's numbers are: properties.UNIT_ITEMS
     scale: float = 0.0                # model units -> Blender units; 0: from `units`
     split: str = "BODY"               # "BODY", "FACE" or "MODEL"
+    origin: str = "FILE"              # object origins: properties.ORIGIN_ITEMS
     smooth: bool = True
     exact_normals: bool = True        # custom split normals from the exact surface
     uv_mode: str = "REAL"             # properties.UV_ITEMS

@@ -15,7 +15,7 @@ import pathlib
 import bpy
 import numpy as np
 
-from . import blender_mesh, io, stored_source
+from . import blender_mesh, stored_source, tbp_io
 
 
 def is_tbp(obj):
@@ -29,7 +29,7 @@ def is_tbp_kind(obj):
 
 
 def stored_solid(text):
-    return io.tbp_from_bytes(stored_source.load(text), stored_source.file_name(text))
+    return tbp_io.tbp_from_bytes(stored_source.load(text), stored_source.file_name(text))
 
 
 def record(props, patches, triangles, seconds):
@@ -65,21 +65,31 @@ def set_tbp_props(obj, text, name, levels, lod, kind='TBP'):
     props.tbp_lod = lod
 
 
+def estimate_report(name, patches, levels, lod):
+    """The triangle estimate at levels/lod, and the warning above tbp_io.TBP_WARN_TRIANGLES
+    on a second line (Object.trimkit.import_report of TBP objects)."""
+    return "\n".join(line for line in tbp_io.tbp_estimate_lines(name, patches, levels, lod) if line)
+
+
 def import_tbp(context, filepath, levels, lod):
-    """A new object polygonized from a .tbp file; returns (object, io.TbpMeshing)."""
+    """A new object polygonized from a .tbp file; returns (object, tbp_io.TbpMeshing).
+    Its trimkit.import_report holds the estimate (estimate_report)."""
     path = pathlib.Path(filepath)
-    solid, data = io.read_tbp_source(path)
+    solid, data = tbp_io.read_tbp_source(path)
     name = solid.name or path.stem
-    meshing = io.tbp_mesh(solid, levels, lod, name=name)
+    report = estimate_report(name, len(solid), levels, lod)  # before the work
+    meshing = tbp_io.tbp_mesh(solid, levels, lod, name=name)
     text = stored_source.store(path.name, data)
     obj = link_new(context, name, meshing.part)
     set_tbp_props(obj, text, path.name, levels, lod)
     record(obj.trimkit, meshing.patches, meshing.triangles, meshing.seconds)
+    obj.trimkit.import_report = report
     return obj, meshing
 
 
 def mesh_arrays(context, obj):
-    """(positions, triangles) of `obj`'s evaluated mesh (modifiers applied), local coordinates."""
+    """(positions, triangles, sharp edges) of `obj`'s evaluated mesh (modifiers applied),
+    local coordinates; sharp edges: (k, 2) vertex indices of the edges marked sharp."""
     evaluated = obj.evaluated_get(context.evaluated_depsgraph_get())
     me = evaluated.to_mesh()
     try:
@@ -88,23 +98,30 @@ def mesh_arrays(context, obj):
         me.vertices.foreach_get("co", positions)
         triangles = np.empty(3 * len(me.loop_triangles), np.int32)
         me.loop_triangles.foreach_get("vertices", triangles)
+        sharp = np.zeros(len(me.edges), bool)
+        me.edges.foreach_get("use_edge_sharp", sharp)
+        edges = np.empty(2 * len(me.edges), np.int32)
+        me.edges.foreach_get("vertices", edges)
     finally:
         evaluated.to_mesh_clear()
-    return positions.reshape(-1, 3), triangles.reshape(-1, 3)
+    return positions.reshape(-1, 3), triangles.reshape(-1, 3), edges.reshape(-1, 2)[sharp]
 
 
-def mesh_to_tbp(context, obj, levels, lod, sharp_angle=io.TBP_SHARP_ANGLE):
-    """A new TBP object (cubic PN triangles, creases above `sharp_angle` kept) from a
-    closed mesh object, with its transform; the source mesh is hidden."""
-    positions, triangles = mesh_arrays(context, obj)
+def mesh_to_tbp(context, obj, levels, lod, sharp_angle=tbp_io.TBP_SHARP_ANGLE, marked_sharp=True):
+    """A new TBP object (cubic PN triangles, creases above `sharp_angle` kept, and along
+    the edges marked sharp when `marked_sharp`) from a closed mesh object, with its
+    transform; the source mesh is hidden."""
+    positions, triangles, sharp_edges = mesh_arrays(context, obj)
     name = f"{obj.name} TBP"
-    solid = io.mesh_to_tbp(positions, triangles, name, sharp_angle)
-    meshing = io.tbp_mesh(solid, levels, lod, name=name)
+    solid = tbp_io.mesh_to_tbp(positions, triangles, name, sharp_angle, sharp_edges if marked_sharp else None)
+    report = estimate_report(name, len(solid), levels, lod)
+    meshing = tbp_io.tbp_mesh(solid, levels, lod, name=name)
     file_name = f"{name}.tbp"
-    text = stored_source.store(file_name, io.tbp_bytes(solid))
+    text = stored_source.store(file_name, tbp_io.tbp_bytes(solid))
     new = link_new(context, name, meshing.part, obj.matrix_world.copy())
     set_tbp_props(new, text, file_name, levels, lod)
     record(new.trimkit, meshing.patches, meshing.triangles, meshing.seconds)
+    new.trimkit.import_report = report
     obj.hide_set(True)
     return new, meshing
 
@@ -114,8 +131,21 @@ def tool_matrix(target, tool):
     return np.array(target.matrix_world.inverted() @ tool.matrix_world)
 
 
+def source_resolution(obj):
+    """(levels, lod) the TBP object `obj` was polygonized at: a trim of it at these is as
+    dense as it (rather than a fixed default, which can be many times denser)."""
+    return obj.trimkit.tbp_levels, obj.trimkit.tbp_lod
+
+
+def trim_estimate(target, levels, lod):
+    """tbp_io.tbp_estimate_lines of trimming `target` at levels/lod (before the work)."""
+    return tbp_io.tbp_estimate_lines(target.name, target.trimkit.faces, levels, lod)
+
+
 def trim(context, target, tool, keep, levels, lod):
-    """A new object: `target`'s patches trimmed against the solid of `tool`; returns (object, io.TbpTrim)."""
+    """A new object: `target`'s patches trimmed against the solid of `tool`; returns (object, tbp_io.TbpTrim).
+    The new object's trimkit.import_report holds the estimate (and the warning above
+    tbp_io.TBP_WARN_TRIANGLES)."""
     if not is_tbp(target) or not is_tbp(tool):
         raise ValueError("trim needs two TBP solid objects (import a .tbp or use Mesh to TBP)")
     if target == tool:
@@ -133,14 +163,15 @@ def trim(context, target, tool, keep, levels, lod):
     props.tool_name = tool.name
     props.tool_matrix = matrix.ravel().tolist()
     record(props, len(stored_solid(target.trimkit.source)), result.triangles, result.seconds)
+    props.import_report = estimate_report(target.name, target.trimkit.faces, levels, lod)
     target.hide_set(True)
     return obj, result
 
 
 def trim_solids(target_text, tool_text, matrix, keep, levels, lod, name):
     target = stored_solid(target_text)
-    tool = io.transform_tbp(stored_solid(tool_text), matrix)
-    return io.tbp_trim(target, tool, keep, levels, lod, name=name)
+    tool = tbp_io.transform_tbp(stored_solid(tool_text), matrix)
+    return tbp_io.tbp_trim(target, tool, keep, levels, lod, name=name)
 
 
 def remesh(obj):
@@ -152,8 +183,9 @@ def remesh(obj):
                              props.tbp_lod, obj.name)
         patches = len(stored_solid(props.source))
     else:
-        result = io.tbp_mesh(stored_solid(props.source), props.tbp_levels, props.tbp_lod, name=obj.name)
+        result = tbp_io.tbp_mesh(stored_solid(props.source), props.tbp_levels, props.tbp_lod, name=obj.name)
         patches = result.patches
+    props.import_report = estimate_report(obj.name, patches, props.tbp_levels, props.tbp_lod)
     blender_mesh.replace_mesh(obj, result.part, props.smooth, props.exact_normals)
     record(props, patches, result.triangles, result.seconds)
     return result

@@ -234,9 +234,11 @@ void bind_tbp(py::module_& m) {
           "patch index, [TrimResult per patch]).");
 
     m.def("pn_triangles", &tbp::pn_triangles, py::arg("mesh"), py::arg("sharp_angle") = tbp::kNoSharpEdges,
-          py::call_guard<py::gil_scoped_release>(),
+          py::arg("sharp_edges") = tbp::VertexPairs{}, py::call_guard<py::gil_scoped_release>(),
           "Cubic PN-triangle solid of a closed triangle mesh (welded first); sides whose triangles meet at more "
-          "than sharp_angle (radians) stay creases; ValueError for an invalid mesh.");
+          "than sharp_angle (radians), and sides whose vertices are a pair of sharp_edges ([(a, b)] indices "
+          "into the mesh's positions: edges marked sharp), stay creases; ValueError for an invalid mesh or "
+          "a sharp_edges index outside it.");
     py::class_<tbp::LoopConversion>(m, "LoopConversion")
         .def_readonly("solid", &tbp::LoopConversion::solid)
         .def_readonly("approximated", &tbp::LoopConversion::approximated)

@@ -452,7 +452,7 @@ NORMAL_ANGLE_LIMIT = 0.05  # degrees
 
 
 def test_custom_normals_are_the_exact_surface_normals():
-    from trimkit import blender_mesh, io
+    from trimkit import blender_mesh, io, tbp_io
     model, _ = io.read_source(BRACKET)
     part = io.tessellate(model, 0.001, relative=True, scale=1e-3).parts[0]
     me = blender_mesh.create_mesh(part)
@@ -461,7 +461,7 @@ def test_custom_normals_are_the_exact_surface_normals():
     bracket_angle = worst_normal_angle(me, part)
     blender_angle = worst_normal_angle(blender_mesh.create_mesh(part, exact_normals=False), part)
     assert blender_angle > 10 * NORMAL_ANGLE_LIMIT, f"Blender's own normals are as close ({blender_angle} deg)"
-    cube = io.tbp_mesh(io.read_tbp_source(tbp_cube_file())[0], 2, 1).part  # welded across the creases
+    cube = tbp_io.tbp_mesh(tbp_io.read_tbp_source(tbp_cube_file())[0], 2, 1).part  # welded across the creases
     assert blender_mesh.vertex_normals_if_shared(cube.triangles, cube.corner_normals, len(cube.positions)) is None
     cube_angle = worst_normal_angle(blender_mesh.create_mesh(cube), cube)
     assert bracket_angle < NORMAL_ANGLE_LIMIT and cube_angle < NORMAL_ANGLE_LIMIT, (bracket_angle, cube_angle)
@@ -679,6 +679,70 @@ def test_step_assembly_imports_as_a_collection_tree_of_linked_duplicates():
           f"checked (5 meshes) in {seconds:.1f} s, every face passes")
 
 
+def world_vertices(obj):
+    import numpy as np
+    me = obj.data
+    co = np.empty(3 * len(me.vertices), np.float64)
+    me.vertices.foreach_get("co", co)
+    m = np.array(obj.matrix_world, np.float64)
+    return co.reshape(-1, 3) @ m[:3, :3].T + m[:3, 3]
+
+
+def world_box_centre(obj):
+    """Centre of the object's bounding box (Blender's bound_box, its 8 corners) in world space."""
+    corners = [obj.matrix_world @ mathutils.Vector(c) for c in obj.bound_box]
+    return mathutils.Vector([(min(c[i] for c in corners) + max(c[i] for c in corners)) / 2 for i in range(3)])
+
+
+def test_part_box_centre_origins_keep_the_world_positions_of_an_assembly():
+    import numpy as np
+    path = step_sample("as1-oc-214-mat.stp")
+    empty_scene()
+    assert bpy.ops.import_scene.trimkit_step(filepath=str(path)) == {'FINISHED'}  # origin='FILE', the default
+    file_origin = {o.name: (world_vertices(o), o.matrix_world.translation.copy()) for o in bpy.data.objects}
+    empty_scene()
+    assert bpy.ops.import_scene.trimkit_step(filepath=str(path), origin='BOX') == {'FINISHED'}
+    objects = list(bpy.data.objects)
+    assert sorted(o.name for o in objects) == sorted(file_origin), "the same objects either way"
+    assert len(instance_groups(objects)) == 5, "instances still share their part's mesh"
+    moved = aligned = worst_shift = worst_centre = 0
+    for o in objects:
+        before, file_translation = file_origin[o.name]
+        after = world_vertices(o)
+        size = float(np.ptp(after, axis=0).max())
+        worst_shift = max(worst_shift, float(np.abs(after - before).max()) / size)
+        # the origin is the centre of the object's box: the mesh's own box is centred on it ...
+        local = np.array([c[:] for c in o.bound_box])
+        assert np.abs(local.min(0) + local.max(0)).max() < 1e-6 * size, (o.name, local.min(0), local.max(0))
+        # ... and so, in world space, the origin is the world box's centre
+        centre = world_box_centre(o)
+        worst_centre = max(worst_centre, (o.matrix_world.translation - centre).length / size)
+        # (where the part's vertices are axis-aligned in world space, their box is that box)
+        rotation = np.array(o.matrix_world.to_3x3())
+        if np.all(np.isclose(np.abs(rotation), 0.0, atol=1e-9) | np.isclose(np.abs(rotation), 1.0, atol=1e-9)):
+            vertex_centre = (after.min(0) + after.max(0)) / 2
+            assert np.abs(vertex_centre - np.array(o.matrix_world.translation)).max() < 1e-6 * size, o.name
+            aligned += 1
+        moved += (o.matrix_world.translation - file_translation).length > 1e-3 * size
+    assert worst_shift < 1e-6 and worst_centre < 1e-6, (worst_shift, worst_centre)
+    assert moved > len(objects) // 2, moved  # the file's part origins are mostly not at their box centres
+    # A re-mesh and the check work in the part's coordinates: the mesh stays put and passes.
+    bolt = max(objects, key=lambda o: o.trimkit.origin.length)
+    box = [bolt.matrix_world @ mathutils.Vector(c) for c in bolt.bound_box]
+    size = max(bolt.dimensions)
+    select_only([bolt])
+    bolt.trimkit.relative = False
+    bolt.trimkit.tolerance *= 0.5
+    assert bpy.ops.object.trimkit_retessellate() == {'FINISHED'}
+    again = [bolt.matrix_world @ mathutils.Vector(c) for c in bolt.bound_box]
+    assert max((a - b).length for a, b in zip(box, again)) < 0.01 * size, (box, again)
+    assert bpy.ops.object.trimkit_check() == {'FINISHED'}
+    assert bolt.trimkit.check_report.startswith(f"{bolt.trimkit.faces} faces, all pass"), bolt.trimkit.check_report
+    print(f"    as1 Part Box Centre: {len(objects)} objects, {moved} origins moved; world vertices within "
+          f"{worst_shift:.1e} of File Origin's, origins within {worst_centre:.1e} of the box centres (of size; "
+          f"{aligned} axis-aligned ones: the world vertex box's centre); "
+          f"{bolt.name} re-meshed and checked: {bolt.trimkit.check_report[:40]}")
+
 # -- TBP solids ---------------------------------------------------------------
 
 TBP_SLOPE = math.sqrt(1 + 0.1 ** 2 + 0.05 ** 2)
@@ -826,6 +890,162 @@ def test_tbp_cube_stays_a_cube_and_its_source_is_hidden():
     print(f"    Mesh to TBP of a cube: volume {volume:.6f} (8 exact); smoothed {smooth:.4f}")
 
 
+def test_tbp_import_presets_set_levels_and_lod():
+    import types
+    presets = bpy.utils.preset_paths("operator/import_scene.trimkit_tbp")
+    files = {p.name: p for folder in presets for p in pathlib.Path(folder).glob("*.py")}
+    assert {"Preview.py", "Render.py", "Export.py"} <= set(files), files
+    assert 'PRESET' in bpy.types.IMPORT_SCENE_OT_trimkit_tbp.bl_options
+    counts = {}
+    for name in ("Preview.py", "Render.py", "Export.py"):
+        operator = types.SimpleNamespace()  # what the preset menu gives the file: the file browser's operator
+        text = files[name].read_text().replace("bpy.context.active_operator", "operator")
+        exec(compile(text, name, "exec"), {"operator": operator})
+        empty_scene()
+        cube = import_tbp(tbp_cube_file(), operator.levels, operator.lod)
+        counts[name] = len(cube.data.polygons)
+        assert counts[name] == 12 * (operator.lod + 1) ** (2 * operator.levels), (name, counts[name])
+        assert is_closed(cube)
+    assert counts["Preview.py"] < counts["Export.py"] < counts["Render.py"], counts
+    print(f"    TBP presets on the 12-patch cube: " + ", ".join(f"{n[:-3]} {c}" for n, c in counts.items()))
+
+def solid_volume(obj):
+    """Volume of a closed mesh by the divergence theorem, in its local coordinates."""
+    me = obj.data
+    return sum(me.vertices[p.vertices[0]].co.dot(me.vertices[p.vertices[1]].co.cross(me.vertices[p.vertices[2]].co))
+               for p in me.polygons) / 6.0
+
+
+def test_tbp_cube_keeps_edges_marked_sharp_whatever_the_sharp_angle():
+    above = math.radians(100.0)  # the cube's sides meet at 90 degrees: none is sharp by angle
+    volumes = {}
+    for marked in (True, False):
+        empty_scene()
+        bpy.ops.mesh.primitive_cube_add(size=2.0)
+        cube = bpy.context.active_object
+        for e in cube.data.edges:
+            e.use_edge_sharp = marked
+        assert bpy.ops.object.trimkit_mesh_to_tbp(levels=1, lod=1, sharp_angle=above) == {'FINISHED'}
+        solid = bpy.context.active_object
+        assert solid != cube and solid.trimkit.faces == 12 and is_closed(solid)
+        volumes[marked] = solid_volume(solid)
+    assert abs(volumes[True] - 8.0) < 0.01 * 8.0, volumes  # a 2-unit cube: 2^3
+    assert volumes[False] > 1.1 * 8.0, volumes  # nothing marked: every side smoothed, the cube bulges
+    empty_scene()
+    bpy.ops.mesh.primitive_cube_add(size=2.0)
+    for e in bpy.context.active_object.data.edges:
+        e.use_edge_sharp = True
+    assert bpy.ops.object.trimkit_mesh_to_tbp(levels=1, lod=1, sharp_angle=above, use_marked_sharp=False) == \
+        {'FINISHED'}
+    ignored = solid_volume(bpy.context.active_object)
+    assert abs(ignored - volumes[False]) < 1e-9, (ignored, volumes)
+    print(f"    cube, sharp angle 100 deg: all edges marked sharp -> volume {volumes[True]:.6f} (8 exact); "
+          f"none marked {volumes[False]:.4f}; marks ignored {ignored:.4f}")
+
+
+def tbp_estimate(patches, levels, lod):
+    """Triangles of `patches` polygonized at levels L, lod K: (K+1)^L segments per patch edge."""
+    return patches * (lod + 1) ** (2 * levels)
+
+
+def test_tbp_trim_follows_the_target_resolution_and_warns_above_500k_triangles():
+    empty_scene()
+    cube = import_tbp(tbp_cube_file(), 1, 1)
+    square = import_tbp(tbp_square_file(1.0), 2, 1)
+    square.location = (0.5, 0.5, 0.0)  # the cube cuts a hole in the middle (as in the saved-blend test)
+    bpy.context.view_layer.update()
+    source = len(square.data.polygons)
+    assert source == tbp_estimate(2, 2, 1) == 32, source
+    expected = (4.0 - 1.0) * TBP_SLOPE  # the square's area minus the cube's section
+    counts = {}
+    for levels, lod in ((None, None), (2, 3)):  # not given (the square's 2, 1); the former fixed default
+        square.hide_set(False)  # a trim hides its target
+        select_only([square, cube])
+        given = {} if levels is None else dict(levels=levels, lod=lod)
+        assert bpy.ops.object.trimkit_trim(keep='outside', **given) == {'FINISHED'}
+        trimmed = bpy.context.active_object
+        assert abs(mesh_area(trimmed) - expected) < 1e-5 * expected, (mesh_area(trimmed), expected)
+        counts[levels] = len(trimmed.data.polygons)
+        if levels is None:
+            assert (trimmed.trimkit.tbp_levels, trimmed.trimkit.tbp_lod) == (2, 1)
+            report = trimmed.trimkit.import_report
+            assert report == f"estimate {tbp_estimate(2, 2, 1)} triangles (2 patches at levels 2, lod 1)", report
+    density = (counts[None] / expected) / (source / (4.0 * TBP_SLOPE))
+    fixed = (counts[2] / expected) / (source / (4.0 * TBP_SLOPE))
+    assert density < 2.0 and fixed > 8.0, (counts, density, fixed)
+    # levels 3, lod 7: 8^3 segments per patch edge, 2 * 8^6 = 524288 triangles: a warning, and the
+    # (far, so untrimmed) square really has them
+    far = import_tbp(tbp_square_file(0.2), 1, 1)
+    far.location = (5.0, 0.0, 0.0)
+    bpy.context.view_layer.update()
+    square.hide_set(False)
+    select_only([square, far])
+    big = tbp_estimate(2, 3, 7)
+    assert big > 500000
+    assert bpy.ops.object.trimkit_trim(keep='outside', levels=3, lod=7) == {'FINISHED'}
+    dense = bpy.context.active_object
+    lines = dense.trimkit.import_report.splitlines()
+    assert lines[0].startswith(f"estimate {big} triangles"), lines
+    assert len(lines) == 2 and f"{big} triangles" in lines[1] and "above 500000" in lines[1], lines
+    assert len(dense.data.polygons) == big, len(dense.data.polygons)
+    print(f"    trim at the square's levels 2, lod 1: {counts[None]} triangles ({density:.2f}x its density; "
+          f"{fixed:.1f}x at the former fixed levels 2, lod 3); "
+          f"levels 3, lod 7: {lines[1]}")
+
+
+def test_tbp_import_mesh_to_tbp_and_remesh_estimate_their_triangles_and_warn_above_500k():
+    empty_scene()
+    cube = import_tbp(tbp_cube_file(), 2, 1)
+    assert cube.trimkit.import_report == f"estimate {tbp_estimate(12, 2, 1)} triangles (12 patches at levels 2, lod 1)"
+    assert len(cube.data.polygons) == tbp_estimate(12, 2, 1) == 192
+    square = import_tbp(tbp_square_file(), 3, 7)  # 2 patches, 8^3 segments an edge
+    big = tbp_estimate(2, 3, 7)
+    lines = square.trimkit.import_report.splitlines()
+    assert len(square.data.polygons) == big > 500000 and len(lines) == 2, (len(square.data.polygons), lines)
+    assert f"{big} triangles, above 500000" in lines[1], lines
+    square.trimkit.tbp_levels, square.trimkit.tbp_lod = 2, 1
+    select_only([square])
+    assert bpy.ops.object.trimkit_retessellate() == {'FINISHED'}
+    assert square.trimkit.import_report == "estimate 32 triangles (2 patches at levels 2, lod 1)", \
+        square.trimkit.import_report
+    bpy.ops.mesh.primitive_cube_add(size=2.0)
+    assert bpy.ops.object.trimkit_mesh_to_tbp(levels=1, lod=1) == {'FINISHED'}
+    solid = bpy.context.active_object
+    assert solid.trimkit.import_report == f"estimate {tbp_estimate(12, 1, 1)} triangles (12 patches at levels 1, lod 1)"
+    print(f"    estimates: cube {cube.trimkit.import_report}; square at levels 3, lod 7: {lines[1]}; "
+          f"re-meshed: {square.trimkit.import_report}; Mesh to TBP: {solid.trimkit.import_report}")
+
+def test_tbp_trim_asks_before_a_trim_above_500k_triangles_when_invoked():
+    """INVOKE_DEFAULT in a Blender window under Xvfb (tests/blender/tbp_trim_confirm.py):
+    above the estimate limit the trim asks and changes nothing (Esc), below it runs at once."""
+    xvfb, _ = xvfb_and_assembly()
+    folder = TMP / "confirm"
+    folder.mkdir(parents=True, exist_ok=True)
+    files = {}
+    for key, path in (("cube", tbp_cube_file()), ("far", tbp_square_file(0.2)), ("square", tbp_square_file(1.0))):
+        files[key] = folder / f"{key}.tbp"
+        shutil.copyfile(path, files[key])  # tbp_square_file writes one square.tbp
+    empty_scene()
+    start = folder / "start.blend"  # opening a file skips the splash screen
+    assert bpy.ops.wm.save_as_mainfile(filepath=str(start)) == {'FINISHED'}
+    command = [xvfb, "-a", "-s", "-screen 0 1280x800x24", bpy.app.binary_path, "--factory-startup",
+               "--enable-event-simulate", "-p", "0", "0", "1280", "800", str(start),
+               "--python", str(ROOT / "tests" / "blender" / "tbp_trim_confirm.py"), "--",
+               "--cube", str(files["cube"]), "--square", str(files["square"]), "--far", str(files["far"]),
+               "--out", ARGS.out]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    lines = [l for l in run.stdout.splitlines() if l.startswith("confirm:")]
+    assert run.returncode == 0 and "confirm: done" in lines, (run.returncode, run.stdout[-3000:], run.stderr[-2000:])
+    import numpy as np
+    for name in ("confirm_trim.png", "tbp_trim_panel.png"):
+        image = bpy.data.images.load(str(pathlib.Path(ARGS.out) / name))
+        pixels = np.empty(4 * image.size[0] * image.size[1], np.float32)
+        image.pixels.foreach_get(pixels)
+        assert min(image.size) >= 200 and pixels.reshape(-1, 4)[:, :3].std(axis=0).max() > 0.05, (name, image.size)
+        lines.append(f"confirm: {name} {image.size[0]}x{image.size[1]}")
+        bpy.data.images.remove(image)
+    print("    " + "\n    ".join(l for l in lines if l != "confirm: done"))
+
 def test_tbp_errors_cancel_and_leave_the_scene_unchanged():
     empty_scene()
     bpy.ops.mesh.primitive_plane_add()
@@ -903,6 +1123,31 @@ def test_batch_converts_two_files_to_glb_and_blend():
         assert out.exists() and out.stat().st_size > 1000
         print(f"    batch {suffix}: " + " | ".join(lines))
 
+
+def test_batch_origin_box_puts_each_origin_at_its_box_centre():
+    import numpy as np
+    centres = {}
+    for origin in ("FILE", "BOX"):
+        out = TMP / f"batch_origin_{origin}.blend"
+        run = run_batch("--input", BRACKET, "--tolerance", "0.001", "--relative", "--split", "FACE",
+                        "--origin", origin, "--output", out)
+        assert run.returncode == 0, run.stderr[-2000:]
+        with bpy.data.libraries.load(str(out)) as (source, target):
+            target.objects = list(source.objects)
+        for obj in target.objects:
+            world = world_vertices(obj)
+            centres[origin, obj.trimkit.part_index] = ((world.min(0) + world.max(0)) / 2, world,
+                                                       np.array(obj.matrix_world.translation))
+            bpy.data.objects.remove(obj)
+    assert sorted(centres) == [("BOX", 0), ("BOX", 1), ("FILE", 0), ("FILE", 1)], sorted(centres)
+    for name in (0, 1):  # the bracket's two CAD faces
+        box_centre, box_world, box_origin = centres["BOX", name]
+        _, file_world, file_origin = centres["FILE", name]
+        assert np.abs(box_world - file_world).max() < 1e-6, name  # the same world positions
+        assert np.abs(box_origin - box_centre).max() < 1e-6 and np.abs(file_origin).max() == 0.0, \
+            (name, box_origin, box_centre)
+    print(f"    batch --origin BOX: bracket faces' origins at their box centres, "
+          f"e.g. {np.round(box_origin * 1000, 3).tolist()} mm; world vertices as with FILE")
 
 def test_batch_fails_clearly_on_a_damaged_file():
     damaged = TMP / "broken.igs"

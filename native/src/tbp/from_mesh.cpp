@@ -26,8 +26,9 @@ namespace trimkit::tbp {
 namespace {
 
 // The input's positions and triangles, validated and welded (coincident corners become
-// one vertex); `what` names the caller in errors.
-mesh::Mesh welded_cage(const mesh::Mesh& input, const char* what) {
+// one vertex); `what` names the caller in errors. `map`, if given, receives the welded
+// index of every input vertex.
+mesh::Mesh welded_cage(const mesh::Mesh& input, const char* what, std::vector<std::int32_t>* map = nullptr) {
     mesh::validate(input);
     if (input.triangles.empty()) throw geom::InvalidInput(std::string(what) + ": the mesh has no triangles");
     mesh::Mesh m;
@@ -35,7 +36,8 @@ mesh::Mesh welded_cage(const mesh::Mesh& input, const char* what) {
     m.triangles = input.triangles;
     mesh::WeldOptions weld;
     weld.tolerance = kWeldRelativeTolerance * mesh::bounding_box(m).diagonal().norm();
-    mesh::weld_vertices(m, weld);
+    mesh::WeldResult result = mesh::weld_vertices(m, weld);
+    if (map) *map = std::move(result.vertex_map);
     return m;
 }
 
@@ -72,7 +74,10 @@ struct CornerNormals {
     std::vector<Eigen::Vector3d> normal;  // 3 t + c
 };
 
-CornerNormals corner_normals(const mesh::Mesh& m, double sharp_angle) {
+// Sides marked sharp: sorted (min, max) welded vertex pairs.
+using SidePairs = std::vector<std::pair<std::int32_t, std::int32_t>>;
+
+CornerNormals corner_normals(const mesh::Mesh& m, double sharp_angle, const SidePairs& marked) {
     const std::size_t nt = m.triangles.size();
     CornerNormals out{std::vector<std::array<bool, 3>>(nt, {false, false, false}),
                       std::vector<Eigen::Vector3d>(3 * nt, Eigen::Vector3d::Zero())};
@@ -90,7 +95,8 @@ CornerNormals corner_normals(const mesh::Mesh& m, double sharp_angle) {
         const auto [t2, c2] = users[1];
         const Eigen::Vector3d n1 = face_normal(m, m.triangles[t1]), n2 = face_normal(m, m.triangles[t2]);
         const double norms = n1.norm() * n2.norm();
-        if (sharp_angle < M_PI && norms > 0 && n1.dot(n2) < cos_sharp * norms) {
+        const bool by_angle = sharp_angle < M_PI && norms > 0 && n1.dot(n2) < cos_sharp * norms;
+        if (by_angle || std::binary_search(marked.begin(), marked.end(), edge)) {
             out.sharp_side[t1][c1] = out.sharp_side[t2][c2] = true;
             continue;
         }
@@ -121,11 +127,27 @@ CornerNormals corner_normals(const mesh::Mesh& m, double sharp_angle) {
 
 }  // namespace
 
-TbpSolid pn_triangles(const mesh::Mesh& input, double sharp_angle) {
+TbpSolid pn_triangles(const mesh::Mesh& input, double sharp_angle, const VertexPairs& sharp_edges) {
     if (!(sharp_angle >= 0.0))
         throw geom::InvalidInput("pn_triangles: sharp_angle = " + geom::format_value(sharp_angle) + "; expected >= 0");
-    const mesh::Mesh m = welded_cage(input, "pn_triangles");
-    const CornerNormals normals = corner_normals(m, sharp_angle);
+    const auto vertices = static_cast<std::int32_t>(input.positions.size());
+    for (std::size_t k = 0; k < sharp_edges.size(); ++k) {
+        const auto [a, b] = sharp_edges[k];
+        if (a < 0 || b < 0 || a >= vertices || b >= vertices)
+            throw geom::InvalidInput("pn_triangles: sharp_edges[" + std::to_string(k) + "] = (" + std::to_string(a) +
+                                     ", " + std::to_string(b) + "); expected vertex indices in [0, " +
+                                     std::to_string(vertices) + ")");
+    }
+    std::vector<std::int32_t> map;
+    const mesh::Mesh m = welded_cage(input, "pn_triangles", &map);
+    SidePairs marked;
+    marked.reserve(sharp_edges.size());
+    for (const auto& [a, b] : sharp_edges) {
+        const std::int32_t wa = map[a], wb = map[b];
+        if (wa != wb) marked.emplace_back(std::min(wa, wb), std::max(wa, wb));
+    }
+    std::sort(marked.begin(), marked.end());
+    const CornerNormals normals = corner_normals(m, sharp_angle, marked);
     TbpSolid solid;
     solid.name = "pn";
     for (std::size_t t = 0; t < m.triangles.size(); ++t) {

@@ -7,6 +7,10 @@
 // give patches whose normals point out.
 #pragma once
 
+#include <cstdint>
+#include <utility>
+#include <vector>
+
 #include "mesh/mesh.h"
 #include "tbp/tbp_solid.h"
 
@@ -14,14 +18,20 @@ namespace trimkit::tbp {
 
 // Cubic PN-triangle solid of `mesh` (welded first at 1e-9 of its box diagonal).
 // A side whose two triangles' normals differ by more than `sharp_angle` (radians;
-// the default keeps every side smooth) is a crease: its edge points lie on the
-// straight side for both triangles, and each corner's normal is averaged only over
-// the triangles no crease separates from it, so a cube stays a cube.
+// the default keeps every side smooth), or whose two vertices are a pair of
+// `sharp_edges` (indices into mesh.positions, either order: the edges a user marked
+// sharp), is a crease: its edge points lie on the straight side for both
+// triangles, and each corner's normal is averaged only over the triangles no
+// crease separates from it, so a cube stays a cube. A pair that is no side of the
+// mesh is ignored.
 // Throws InvalidInput for an invalid mesh, one without triangles, a negative or NaN
-// sharp_angle, or a vertex where no normal can be formed (its triangles cancel:
-// bad input, named by the vertex index in the welded mesh).
+// sharp_angle, a sharp_edges index outside the mesh, or a vertex where no normal
+// can be formed (its triangles cancel: bad input, named by the vertex index in the
+// welded mesh).
 constexpr double kNoSharpEdges = 4.0;  // more than pi: no side is a crease
-TbpSolid pn_triangles(const mesh::Mesh& mesh, double sharp_angle = kNoSharpEdges);
+using VertexPairs = std::vector<std::pair<std::int32_t, std::int32_t>>;
+TbpSolid pn_triangles(const mesh::Mesh& mesh, double sharp_angle = kNoSharpEdges,
+                      const VertexPairs& sharp_edges = {});
 
 struct LoopConversion {
     TbpSolid solid;            // one quartic patch per cage triangle

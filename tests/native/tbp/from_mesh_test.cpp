@@ -147,6 +147,67 @@ TEST(PnTriangles, SharpSidesStayCreasesSoACubeStaysACube) {
     EXPECT_THROW(pn_triangles(cube, NAN), geom::InvalidInput);
 }
 
+// Volume by the divergence theorem over a polygonized solid's triangles.
+double polygonized_volume(const TbpSolid& s) {
+    PolygonizeOptions o;
+    o.level = 2;
+    o.lod = 1;
+    const mesh::Mesh m = polygonize(s, o);
+    EXPECT_TRUE(mesh::open_edges(m).closed());
+    double volume = 0;
+    for (const auto& t : m.triangles) volume += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]])) / 6.0;
+    return volume;
+}
+
+// Edges marked sharp (Blender's use_edge_sharp) are creases whatever the angle: with
+// no side sharp by angle (pi), the cube's 12 edges given as vertex pairs keep every
+// patch flat and the volume 1. The pairs index the input vertices, before welding: a
+// cube whose faces have their own vertices (24) welds to 8 and gives the same solid.
+// Marking only the 4 edges around the top face (z = 1) leaves the other 8 smooth,
+// so the cube bulges less than when smoothed everywhere. A pair that is no side (a
+// body diagonal) changes nothing; an index outside the mesh is invalid input.
+TEST(PnTriangles, MarkedSharpEdgesStayCreasesWhateverTheAngle) {
+    const mesh::Mesh cube = unit_cube();
+    VertexPairs edges;
+    for (int k = 0; k < 8; ++k)
+        for (int bit : {1, 2, 4})
+            if (!(k & bit)) edges.emplace_back(k, k | bit);
+    ASSERT_EQ(edges.size(), 12u);
+    const TbpSolid marked = pn_triangles(cube, kNoSharpEdges, edges);
+    double worst = 0;
+    for (const auto& p : marked.patches) worst = std::max(worst, off_plane(p));
+    EXPECT_LT(worst, 1e-15);
+    EXPECT_NEAR(polygonized_volume(marked), 1.0, 1e-12);
+
+    // Reversed pairs and the face-split input: vertex 4 q + c is corner c of quad q.
+    mesh::Mesh split;
+    VertexPairs split_edges;
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (int q = 0; q < 6; ++q) {
+        for (int c = 0; c < 4; ++c) split.positions.push_back(cube.positions[quads[q][c]]);
+        split.triangles.push_back({4 * q, 4 * q + 1, 4 * q + 2});
+        split.triangles.push_back({4 * q, 4 * q + 2, 4 * q + 3});
+        for (int c = 0; c < 4; ++c) split_edges.emplace_back(4 * q + (c + 1) % 4, 4 * q + c);
+    }
+    EXPECT_NEAR(polygonized_volume(pn_triangles(split, kNoSharpEdges, split_edges)), 1.0, 1e-12);
+
+    VertexPairs top;  // the square z = 1: vertices 4..7
+    for (const auto& e : edges)
+        if ((e.first & 4) && (e.second & 4)) top.push_back(e);
+    ASSERT_EQ(top.size(), 4u);
+    const double smooth = polygonized_volume(pn_triangles(cube));
+    const double partly = polygonized_volume(pn_triangles(cube, kNoSharpEdges, top));
+    EXPECT_GT(partly, 1.0 + 1e-3);
+    EXPECT_LT(partly, smooth - 1e-3);
+
+    const TbpSolid diagonal = pn_triangles(cube, kNoSharpEdges, {{0, 7}});
+    const TbpSolid none = pn_triangles(cube);
+    for (std::size_t k = 0; k < none.patches.size(); ++k)
+        EXPECT_EQ(diagonal.patches[k].points(), none.patches[k].points());
+    EXPECT_THROW(pn_triangles(cube, kNoSharpEdges, {{0, 8}}), geom::InvalidInput);
+    EXPECT_THROW(pn_triangles(cube, kNoSharpEdges, {{-1, 2}}), geom::InvalidInput);
+}
+
 // Below every side's angle the sharp angle changes nothing: an icosphere's faces meet
 // at about 20 degrees (level 1), so a sharp angle of 30 degrees gives the smooth solid.
 TEST(PnTriangles, SharpAngleAboveEverySideChangesNothing) {
