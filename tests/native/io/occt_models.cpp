@@ -234,10 +234,11 @@ double write_ball_hole_on_seam_iges(const std::string& path, double R, double r,
     return write_iges(BRepAlgoAPI_Cut(ball, BRepPrimAPI_MakeCylinder(out, r, 2 * R).Shape()).Shape(), path, brep_mode);
 }
 
-double write_cone_apex_hole_faces_iges(const std::string& path, double R, double h, double r) {
+double write_cone_apex_hole_iges(const std::string& path, double R, double h, double r, bool brep_mode) {
     const TopoDS_Shape cone = BRepPrimAPI_MakeCone(R, 0, h).Shape();
     const gp_Ax2 across(gp_Pnt(-4 * R / 3, 4 * R / 15, 0.3 * h), gp::DX());
-    return write_iges(BRepAlgoAPI_Cut(cone, BRepPrimAPI_MakeCylinder(across, r, 8 * R / 3).Shape()).Shape(), path, false);
+    return write_iges(BRepAlgoAPI_Cut(cone, BRepPrimAPI_MakeCylinder(across, r, 8 * R / 3).Shape()).Shape(), path,
+                      brep_mode);
 }
 
 double write_filleted_hole_block_iges(const std::string& path) {

@@ -61,8 +61,9 @@ double write_ball_hole_on_seam_iges(const std::string& path, double R, double r,
 
 // A cone of base radius R and height h (apex up) pierced across by a cylinder of
 // radius r along x at y = 4 R / 15, z = 0.3 h, as IGES faces mode (144: the cone a
-// surface of revolution whose domain side u = 0 is the apex). Returns BRepGProp's area.
-double write_cone_apex_hole_faces_iges(const std::string& path, double R, double h, double r);
+// surface of revolution whose domain side u = 0 is the apex) or B-rep mode (a 194
+// cone sized by its boundary). Returns BRepGProp's area.
+double write_cone_apex_hole_iges(const std::string& path, double R, double h, double r, bool brep_mode);
 
 // A block 80 x 40 x 20 with through holes of radius 8 and 6 whose rims are filleted
 // with radius 2 (quarter tubes of tori bounded by the iso-line where two of the torus's
