@@ -9,6 +9,7 @@
 
 #include "geom/error.h"
 #include "tess/collapsed_side.h"
+#include "tess/flattened_cell.h"
 #include "tess/kd_subdivision.h"
 #include "tess/snap_trims_to_cell_lines.h"
 #include "tess/surface_evaluator.h"
@@ -95,12 +96,33 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     // Cells on a side the surface collapses to a point: triangulated about it (collapsed_side.h).
     const CollapsedSides collapsed = collapsed_sides(face.surface);
     std::array<std::vector<Eigen::Vector2d>, 4> polar;
+    // 3D points of trimmed cells' vertices, as the mesh will have them (trim points
+    // keep their xyz), filled on demand.
+    std::vector<Eigen::Vector3d> xyz(uv.size());
+    std::vector<char> placed(uv.size(), 0);
+    auto place = [&](const std::vector<int>& ring) {
+        for (int i : ring) {
+            if (placed[i]) continue;
+            const TrimmedVertex& v = trimmed.vertices[i];
+            xyz[i] = v.on_trim ? v.xyz : face.surface.evaluate(v.uv.x(), v.uv.y());
+            placed[i] = 1;
+        }
+    };
     for (const CellPolygon& polygon : trimmed.polygons) {
         mesh::check_deadline(deadline, "triangulation");
         const int side = touched_collapsed_side(face.surface, collapsed, uv, polygon.outer);
         if (side >= 0 && polar[side].empty()) polar[side] = polar_about_side(face.surface, side, uv);
-        const auto cell_triangles =
+        auto cell_triangles =
             triangulate_polygon(side >= 0 ? polar[side] : uv, polygon.outer, polygon.holes, deadline);
+        if (!polygon.whole_cell) {
+            // Trimmed cells: a triangle thin in (u,v) may face backwards in 3D (flattened_cell.h).
+            place(polygon.outer);
+            for (const auto& hole : polygon.holes) place(hole);
+            if (has_backward_triangle(face.surface, uv, xyz, cell_triangles)) {
+                auto flat = triangulate_in_3d_plane(face.surface, uv, xyz, polygon.outer, polygon.holes, deadline);
+                if (!flat.empty()) cell_triangles = std::move(flat);
+            }
+        }
         triangles.insert(triangles.end(), cell_triangles.begin(), cell_triangles.end());
     }
 

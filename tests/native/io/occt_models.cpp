@@ -258,6 +258,12 @@ double write_torus_hole_on_seams_iges(const std::string& path) {
     return write_brep_mode_iges(BRepAlgoAPI_Cut(ring, BRepPrimAPI_MakeCylinder(radial, 4, 40).Shape()).Shape(), path);
 }
 
+double write_frustum_hole_on_seam_iges(const std::string& path) {
+    const TopoDS_Shape frustum = BRepPrimAPI_MakeCone(25, 12, 40).Shape();
+    const gp_Ax2 across(gp_Pnt(-40, 0, 20), gp::DX());
+    return write_brep_mode_iges(BRepAlgoAPI_Cut(frustum, BRepPrimAPI_MakeCylinder(across, 5, 80).Shape()).Shape(), path);
+}
+
 double write_periodic_spline_prism_brep(const std::string& path, const std::vector<Eigen::Vector2d>& outline,
                                         double h) {
     Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, static_cast<int>(outline.size()));

@@ -76,6 +76,10 @@ double write_filleted_hole_block_iges(const std::string& path);
 // BRepGProp's area.
 double write_torus_hole_on_seams_iges(const std::string& path);
 
+// A frustum (radii 25 and 12, height 40) with a cross hole of radius 5 along x at
+// z = 20, through its seam, as IGES B-rep mode. Returns BRepGProp's area.
+double write_frustum_hole_on_seam_iges(const std::string& path);
+
 // A prism of height h over the closed periodic B-spline interpolating `outline` (z = 0),
 // as .brep: the plane faces carry no stored p-curves, so OCCT makes them from the
 // periodic 3D curve. Returns the solid's area from the outline's samples (BRepGProp

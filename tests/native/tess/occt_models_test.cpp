@@ -366,6 +366,22 @@ TEST(OcctModels, IgesConeRangeStopsAtItsApex) {
     std::filesystem::remove(path);
 }
 
+// A ruled face needs no inner points, so a cell spans a whole ruling of the frustum;
+// a triangle from the ruling's ends to a hole point just beside their (u,v) chord
+// faced backwards in 3D (two of area 8.8 at T = 0.8: area +0.28 %, within T).
+TEST(OcctModels, FrustumCellsAlongWholeRulingsDoNotFold) {
+    REQUIRE_OCCT();
+    const std::string path = temp_path("frustum.igs");
+    const double area = test::write_frustum_hole_on_seam_iges(path);
+    const geom::Model model = io::read_model(path);
+    EXPECT_EQ(model.faces.size(), 4u);
+    for (double T : {0.8124, 0.4, 0.08}) {
+        expect_whole(model, T, area, "T = " + std::to_string(T));
+        EXPECT_LT(standing_area(mesh_at(model, T).mesh), 5e-4 * area) << "T = " << T;
+    }
+    std::filesystem::remove(path);
+}
+
 // A prism over a periodic B-spline as .brep: OCCT converts the plane faces' computed
 // p-curves over exactly one period into curves that do not close; the reader unrolls
 // the period itself (it skipped both plane faces: "trim loops are not closed").
