@@ -6,9 +6,6 @@
 // bodies once, unplaced. OCCT's memory faults on broken files become read errors.
 #include "io/read_step.h"
 
-// OCC_CATCH_SIGNALS turns a signal raised inside OCCT into a Standard_Failure (Linux).
-#define OCC_CONVERT_SIGNALS
-
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
@@ -54,7 +51,7 @@ constexpr std::size_t kMaxOccurrences = 200'000;
 
 std::string label_name(const TDF_Label& label) {
     Handle(TDataStd_Name) name;
-    if (!label.FindAttribute(TDataStd_Name::GetID(), name)) return {};
+    if (!occt_guarded([&] { return label.FindAttribute(TDataStd_Name::GetID(), name); })) return {};
     return TCollection_AsciiString(name->Get()).ToCString();  // UTF-8
 }
 
@@ -118,16 +115,17 @@ public:
         if (depth > kMaxAssemblyDepth) throw std::runtime_error("assembly nesting deeper than 64 levels");
         monitor_.check();
         const Handle(XCAFDoc_ShapeTool)& shapes = styles_.shapes();
-        if (XCAFDoc_ShapeTool::IsAssembly(label)) {
+        if (occt_guarded([&] { return XCAFDoc_ShapeTool::IsAssembly(label); })) {
             std::vector<std::string> below = path;
             below.push_back(occurrence_name.empty() ? label_name(label) : occurrence_name);
             TDF_LabelSequence components;
-            XCAFDoc_ShapeTool::GetComponents(label, components, false);
+            occt_guarded([&] { XCAFDoc_ShapeTool::GetComponents(label, components, false); });
             for (int i = 1; i <= components.Length(); ++i) {
                 const TDF_Label component = components.Value(i);
                 TDF_Label part;
-                if (!XCAFDoc_ShapeTool::GetReferredShape(component, part)) continue;
-                const Eigen::Affine3d local = to_eigen(XCAFDoc_ShapeTool::GetLocation(component).Transformation());
+                if (!occt_guarded([&] { return XCAFDoc_ShapeTool::GetReferredShape(component, part); })) continue;
+                const Eigen::Affine3d local = occt_guarded(
+                    [&] { return to_eigen(XCAFDoc_ShapeTool::GetLocation(component).Transformation()); });
                 std::string name = label_name(component);
                 if (name.empty()) name = label_name(part);
                 walk(part, placement * local, below, name, depth + 1);
@@ -153,7 +151,7 @@ private:
         const std::string key = label_key(label);
         const auto found = parts_.find(key);
         if (found != parts_.end()) return found->second;
-        const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
+        const TopoDS_Shape shape = occt_guarded([&] { return XCAFDoc_ShapeTool::GetShape(label); });
         std::vector<int> bodies;
         if (!shape.IsNull())
             bodies = add_shape(model_, shape, styles_.style(), label_name(label), face_number_, &monitor_);
@@ -163,7 +161,7 @@ private:
 
     static std::string label_key(const TDF_Label& label) {
         TCollection_AsciiString entry;
-        TDF_Tool::Entry(label, entry);
+        occt_guarded([&] { TDF_Tool::Entry(label, entry); });
         return entry.ToCString();
     }
 
@@ -241,6 +239,14 @@ private:
 constexpr double kParseShare = 0.3;
 constexpr double kTransferShare = 0.85;
 
+// Each stage of OCCT's work runs in a signal-catching scope of its own (occt_guarded):
+// the parse (ReadFile), the transfer (with its shape healing) and the walk of the
+// document; each face's translation and healing have theirs (occt_shape.cpp). A
+// memory fault in any of them is thrown as a Standard_Failure from that scope, and
+// everything made out here (the XCAF document, closed by ScratchDocument; the reader;
+// the progress indicator; the model) is destroyed as after any exception. A single
+// scope around the whole read (as before) skipped all of it: the longjmp passes over
+// destructors, which left the document registered with the application (leaked).
 geom::Model read_step_unguarded(const std::string& path, const ReadOptions& options) {
     ReadMonitor monitor(path, options);
     monitor.stage(0.0, kParseShare);
@@ -251,8 +257,9 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     STEPCAFControl_Reader reader;
     reader.SetColorMode(true);
     reader.SetNameMode(true);
-    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
-        const std::string why = read_failures(reader);
+    const IFSelect_ReturnStatus read = occt_guarded([&] { return reader.ReadFile(path.c_str()); });
+    if (read != IFSelect_RetDone) {
+        const std::string why = occt_guarded([&] { return read_failures(reader); });
         throw geom::ReadError(path, 0, "Open CASCADE cannot read this file as STEP" +
                                            (why.empty() ? std::string() : ": " + why));
     }
@@ -260,10 +267,10 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     monitor.check();
     monitor.stage(kParseShare, kTransferShare);
     Handle(OcctProgress) progress = new OcctProgress(monitor);
-    const bool transferred = reader.Transfer(doc, progress->Start());
+    const bool transferred = occt_guarded([&] { return reader.Transfer(doc, progress->Start()); });
     monitor.check();  // a user break ends the transfer early, with or without shapes
     if (!transferred) {
-        const std::string why = read_failures(reader);
+        const std::string why = occt_guarded([&] { return read_failures(reader); });
         throw geom::ReadError(path, 0, "Open CASCADE transfers no shape from the STEP file" +
                                            (why.empty() ? std::string() : ": " + why));
     }
@@ -273,13 +280,14 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     model.units = "mm";  // OCCT converts lengths to xstep.cad.unit, millimetres by default
     model.scale_to_metres = 1e-3;
     TDF_LabelSequence roots;
-    styles.shapes()->GetFreeShapes(roots);
+    occt_guarded([&] { styles.shapes()->GetFreeShapes(roots); });
     monitor.stage(kTransferShare, 1.0);
     AssemblyWalker walker(model, styles, monitor);
     for (int i = 1; i <= roots.Length(); ++i) {
         monitor.report(static_cast<double>(i - 1) / roots.Length());
         const TDF_Label root = roots.Value(i);
-        const Eigen::Affine3d placement = to_eigen(XCAFDoc_ShapeTool::GetLocation(root).Transformation());
+        const Eigen::Affine3d placement =
+            occt_guarded([&] { return to_eigen(XCAFDoc_ShapeTool::GetLocation(root).Transformation()); });
         walker.walk(root, placement, {}, label_name(root), 0);
     }
     monitor.report(1.0);
@@ -301,6 +309,8 @@ geom::Model read_step(const std::string& path, const ReadOptions& options) {
     silence_occt_stdout();
     try {
         OcctSignalGuard guard;
+        // The last resort, for a fault in an OCCT call outside the scopes of
+        // read_step_unguarded (constructors, destructors): caught, without their cleanup.
         OCC_CATCH_SIGNALS
         return read_step_unguarded(path, options);
     } catch (const Standard_Failure& e) {
