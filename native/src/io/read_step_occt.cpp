@@ -12,6 +12,10 @@
 #include <Quantity_Color.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
+#include <StepBasic_ProductDefinition.hxx>
+#include <StepRepr_NextAssemblyUsageOccurrence.hxx>
+#include <Interface_InterfaceModel.hxx>
+#include <StepData_StepModel.hxx>
 #include <Standard_ErrorHandler.hxx>
 #include <TCollection_AsciiString.hxx>
 #include <TCollection_HAsciiString.hxx>
@@ -28,6 +32,7 @@
 
 #include <array>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -214,6 +219,63 @@ void check_step_header(const std::string& path) {
         throw geom::ReadError(path, 1, "not a STEP file (it does not start with 'ISO-10303-21;')");
 }
 
+// Throws a ReadError if the file's assembly structure (NEXT_ASSEMBLY_USAGE_OCCURRENCE:
+// relating product definition -> related one) refers to a missing entity, has a cycle,
+// or nests deeper than kMaxAssemblyDepth. OCCT 7.6's transfer follows it recursively without a check
+// (STEPControl_ActorRead::TransferEntity): a product that contains itself overflows
+// the stack, which no signal catcher survives (the process, Blender, is killed).
+// Found by fuzz_step: tests/fuzz/regressions/step/assembly_missing_component.stp.
+void check_assembly_graph(const std::string& path, const Handle(Interface_InterfaceModel)& model) {
+    if (model.IsNull()) return;
+    // The entity's #number in the file.
+    const Handle(StepData_StepModel) step = Handle(StepData_StepModel)::DownCast(model);
+    const auto label = [&](const Handle(Standard_Transient)& e) { return step.IsNull() ? model->Number(e) : step->IdentLabel(e); };
+    std::map<const Standard_Transient*, std::vector<const Standard_Transient*>> below;
+    std::map<const Standard_Transient*, int> number;
+    for (int i = 1; i <= model->NbEntities(); ++i) {
+        const auto nauo = Handle(StepRepr_NextAssemblyUsageOccurrence)::DownCast(model->Value(i));
+        if (nauo.IsNull()) continue;
+        // A reference to a missing entity: OCCT's transfer then recurses without end too.
+        if (nauo->RelatingProductDefinitionAP242().Value().IsNull() ||
+            nauo->RelatedProductDefinitionAP242().Value().IsNull())
+            throw geom::ReadError(path, 0, "NEXT_ASSEMBLY_USAGE_OCCURRENCE #" + std::to_string(label(nauo)) +
+                                               " refers to a product definition the file does not have");
+        const Handle(StepBasic_ProductDefinition) relating = nauo->RelatingProductDefinition();
+        const Handle(StepBasic_ProductDefinition) related = nauo->RelatedProductDefinition();
+        if (relating.IsNull() || related.IsNull()) continue;  // a PRODUCT_DEFINITION_REFERENCE (AP242)
+        below[relating.get()].push_back(related.get());
+        number.emplace(relating.get(), label(relating));
+        number.emplace(related.get(), label(related));
+    }
+    // Depth-first, iteratively (a hostile file may chain thousands): 1 on the path, 2 done.
+    std::map<const Standard_Transient*, int> state;
+    for (const auto& start : below) {
+        if (state[start.first] != 0) continue;
+        std::vector<std::pair<const Standard_Transient*, size_t>> stack{{start.first, 0}};
+        state[start.first] = 1;
+        while (!stack.empty()) {
+            auto& [node, next] = stack.back();
+            const auto found = below.find(node);
+            if (found == below.end() || next >= found->second.size()) {
+                state[node] = 2;
+                stack.pop_back();
+                continue;
+            }
+            const Standard_Transient* child = found->second[next++];
+            if (state[child] == 1)
+                throw geom::ReadError(path, 0, "the assembly contains itself: product definition #" +
+                                                   std::to_string(number[child]) +
+                                                   " is its own component (NEXT_ASSEMBLY_USAGE_OCCURRENCE cycle)");
+            if (state[child] == 2) continue;
+            if (static_cast<int>(stack.size()) >= kMaxAssemblyDepth)
+                throw geom::ReadError(path, 0, "assembly nesting deeper than " + std::to_string(kMaxAssemblyDepth) +
+                                                   " levels (NEXT_ASSEMBLY_USAGE_OCCURRENCE chain)");
+            state[child] = 1;
+            stack.emplace_back(child, 0);
+        }
+    }
+}
+
 // The XCAF document of one read. NewDocument registers it with the application,
 // which keeps every document it made until Close: without this, each STEP read
 // left its whole document (every shape) allocated for the life of the process.
@@ -263,6 +325,7 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
         throw geom::ReadError(path, 0, "Open CASCADE cannot read this file as STEP" +
                                            (why.empty() ? std::string() : ": " + why));
     }
+    occt_guarded([&] { check_assembly_graph(path, reader.ChangeReader().WS()->Model()); });
     monitor.report(1.0);
     monitor.check();
     monitor.stage(kParseShare, kTransferShare);
