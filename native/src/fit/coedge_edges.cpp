@@ -16,7 +16,10 @@ constexpr std::pair<int, int> kCurveShapes[] = {{1, 2}, {3, 4}, {3, 8}, {3, 16},
 constexpr int kSamplesPerPoint = 6;
 
 std::optional<geom::NurbsCurve3d> edge_curve(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, double tolerance) {
-    const auto [a, b] = c.domain();
+    // Named copies, not a structured binding: a lambda may capture those only from C++20
+    // (clang 14 rejects it in C++17 mode; g++ accepts it).
+    const auto domain = c.domain();
+    const double a = domain.first, b = domain.second;
     const auto image = [&](double s) {
         const Eigen::Vector2d uv = c.evaluate(a + (b - a) * s);
         return S.evaluate(uv.x(), uv.y());

@@ -1,8 +1,5 @@
 #include "io/occt_shape.h"
 
-// OCC_CATCH_SIGNALS turns a signal raised inside OCCT into a Standard_Failure (Linux).
-#define OCC_CONVERT_SIGNALS
-
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -71,16 +68,19 @@ geom::Edge model_edge(const TopoDS_Edge& located) {
     const TopoDS_Edge edge = TopoDS::Edge(located.Oriented(TopAbs_FORWARD));
     geom::Edge out;
     TopoDS_Vertex v0, v1;
-    TopExp::Vertices(edge, v0, v1);
-    if (!v0.IsNull()) out.start = to_eigen(BRep_Tool::Pnt(v0));
-    if (!v1.IsNull()) out.end = to_eigen(BRep_Tool::Pnt(v1));
-    if (BRep_Tool::Degenerated(edge)) return out;
     TopLoc_Location loc;
     double first = 0, last = 0;
-    const Handle(Geom_Curve) c = BRep_Tool::Curve(edge, loc, first, last);
+    Handle(Geom_Curve) c;
+    occt_guarded([&] {
+        TopExp::Vertices(edge, v0, v1);
+        if (!v0.IsNull()) out.start = to_eigen(BRep_Tool::Pnt(v0));
+        if (!v1.IsNull()) out.end = to_eigen(BRep_Tool::Pnt(v1));
+        if (!BRep_Tool::Degenerated(edge)) c = BRep_Tool::Curve(edge, loc, first, last);
+    });
     if (c.IsNull()) return out;
     try {
-        geom::NurbsCurve3d curve = translate_curve(c, first, last);
+        // A fault in the translation is a Standard_Failure from this scope: `out` stays.
+        geom::NurbsCurve3d curve = occt_guarded([&] { return translate_curve(c, first, last); });
         if (!loc.IsIdentity()) curve = curve.transformed(to_eigen(loc.Transformation()));
         out.curve = std::move(curve);
     } catch (const Standard_Failure&) {
@@ -169,7 +169,7 @@ TopoDS_Face healed_face(const TopoDS_Face& face, std::string& done) {
     fix->FixWireTool()->FixAddPCurveMode() = 1;
     fix->FixWireTool()->FixGaps2dMode() = 1;
     fix->FixWireTool()->FixGaps3dMode() = 1;
-    fix->Perform();
+    occt_guarded([&] { fix->Perform(); });
     const Handle(ShapeFix_Wire) wire = fix->FixWireTool();
     std::vector<std::string> what;
     if (wire->StatusReorder(ShapeExtend_DONE)) what.push_back("wire order");
@@ -210,7 +210,8 @@ std::vector<std::vector<int>> coedge_edges(const TopoDS_Face& located, const Top
 // A face whose surface kind has no direct translation, converted by OCCT's
 // NurbsConvert on its own; coedges keep the original face's shared edges.
 geom::Face converted_face(const TopoDS_Face& located, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
-    const TopoDS_Face alone = TopoDS::Face(BRepBuilderAPI_NurbsConvert(located, true).Shape());
+    const TopoDS_Face alone =
+        occt_guarded([&] { return TopoDS::Face(BRepBuilderAPI_NurbsConvert(located, true).Shape()); });
     geom::Face out = convert_face(alone, TopTools_IndexedMapOfShape(), 0);
     out.surface_kind = surface_kind_name(BRep_Tool::Surface(located));
     const auto ids = coedge_edges(located, edges, edge_offset);
@@ -248,13 +249,16 @@ geom::Face translated_face(const TopoDS_Face& face, const TopTools_IndexedMapOfS
     return out;
 }
 
-// The face translated, healed and translated again when its loops do not close.
+// The face translated, healed and translated again when its loops do not close. The
+// translation, the healing and the second translation are each a signal-catching scope
+// of their own (occt_guarded): after a memory fault in one of them, what this function
+// holds (the first translation, the failure text) is still here and destroyed normally.
 geom::Face checked_face(const TopoDS_Face& face, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
     std::string failure;
     std::optional<geom::Face> best;
     double gap = 0;
     try {
-        best = translated_face(face, edges, edge_offset);
+        best = occt_guarded([&] { return translated_face(face, edges, edge_offset); });
         gap = loop_gap(*best);
         if (gap <= kLoopGapRetry) return std::move(*best);
         failure = "trim loops are not closed (relative gap " + geom::format_value(gap) + ")";
@@ -265,7 +269,8 @@ geom::Face checked_face(const TopoDS_Face& face, const TopTools_IndexedMapOfShap
     }
     std::string done;
     try {
-        geom::Face healed = translated_face(healed_face(face, done), edges, edge_offset);
+        const TopoDS_Face healed_shape = healed_face(face, done);
+        geom::Face healed = occt_guarded([&] { return translated_face(healed_shape, edges, edge_offset); });
         const double healed_gap = loop_gap(healed);
         if (!best || healed_gap < gap) {
             healed.warnings.push_back("healed by ShapeFix_Face (" + done + "): " + failure);
@@ -300,10 +305,10 @@ std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& shape, const 
         occurrences.push_back(face);
         ++face_number;
         try {
-            OCC_CATCH_SIGNALS
+            // checked_face catches signals in its own scopes; the colour lookup (XCAF) in one here.
             geom::Face converted = checked_face(face, edge_map, edge_offset);
             converted.source_entity = face_number;
-            if (style.color) converted.color = style.color(face, model);
+            if (style.color) converted.color = occt_guarded([&] { return style.color(face, model); });
             model.faces.push_back(std::move(converted));
             occurrence_face.push_back(static_cast<int>(model.faces.size()) - 1);
             continue;
@@ -336,12 +341,12 @@ std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& shape, const 
     std::vector<int> bodies;
     auto add_body = [&](const TopoDS_Shape& part, const std::string& kind, bool closed) {
         geom::Body body;
-        body.name = style.name ? style.name(part) : std::string();
+        body.name = style.name ? occt_guarded([&] { return style.name(part); }) : std::string();
         if (body.name.empty()) body.name = fallback_name.empty() ? kind + " " + std::to_string(model.bodies.size() + 1)
                                                                  : fallback_name;
         body.closed = closed;
         body.faces = faces_of(part);
-        const int color = style.color ? style.color(part, model) : -1;
+        const int color = style.color ? occt_guarded([&] { return style.color(part, model); }) : -1;
         for (int f : body.faces)
             if (model.faces[f].color < 0) model.faces[f].color = color;
         if (body.faces.empty()) return;

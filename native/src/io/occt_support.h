@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Geometry>
+#include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Trsf.hxx>
@@ -28,6 +29,21 @@ public:
 private:
     struct sigaction saved_[NSIG] = {};
 };
+
+// Runs `f` (calls into OCCT) under OCCT's signal catcher in a frame of its own and
+// returns what it returns. A memory fault inside `f` jumps (longjmp) back to this frame
+// only, skipping the destructors of what `f` made, and leaves it as a Standard_Failure
+// thrown here, so the frames above (documents, readers, faces of ours) unwind as after
+// any exception. Keep `f` to OCCT calls: our objects made inside it are lost on a fault.
+// Scopes nest: the innermost one alive catches. Needs an OcctSignalGuard alive.
+#if !defined(OCC_CONVERT_SIGNALS)
+#error "OCC_CONVERT_SIGNALS must be defined (native/src/io/CMakeLists.txt) for OCC_CATCH_SIGNALS to catch signals"
+#endif
+template <class F>
+auto occt_guarded(F&& f) -> decltype(f()) {
+    OCC_CATCH_SIGNALS
+    return f();
+}
 
 // OCCT's default messenger prints transfer messages on stdout, which would corrupt
 // `trimkit ... --json` output; drops that printer once per process.

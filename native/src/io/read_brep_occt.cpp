@@ -5,9 +5,6 @@
 // (tests: OcctModels.GappedAndMissingPcurvesAreHealedByShapeFix).
 #include "io/read_brep.h"
 
-// OCC_CATCH_SIGNALS turns a signal raised inside OCCT into a Standard_Failure (Linux).
-#define OCC_CONVERT_SIGNALS
-
 #include <filesystem>
 #include <fstream>
 
@@ -51,7 +48,9 @@ geom::Model read_brep_unguarded(const std::string& path, const ReadOptions& opti
     BRep_Builder builder;
     monitor.stage(0.0, kReadShare);
     Handle(OcctProgress) progress = new OcctProgress(monitor);
-    const bool read = BRepTools::Read(shape, path.c_str(), builder, progress->Start());
+    // Its own signal-catching scope (occt_guarded): after a fault, the shape, the
+    // progress indicator and the monitor are destroyed as after any exception.
+    const bool read = occt_guarded([&] { return BRepTools::Read(shape, path.c_str(), builder, progress->Start()); });
     monitor.check();
     if (!read || shape.IsNull())
         throw geom::ReadError(path, 0, "Open CASCADE cannot read this .brep file (BRepTools::Read failed)");

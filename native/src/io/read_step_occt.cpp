@@ -6,15 +6,16 @@
 // bodies once, unplaced. OCCT's memory faults on broken files become read errors.
 #include "io/read_step.h"
 
-// OCC_CATCH_SIGNALS turns a signal raised inside OCCT into a Standard_Failure (Linux).
-#define OCC_CONVERT_SIGNALS
-
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
 #include <Quantity_Color.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
+#include <StepBasic_ProductDefinition.hxx>
+#include <StepRepr_NextAssemblyUsageOccurrence.hxx>
+#include <Interface_InterfaceModel.hxx>
+#include <StepData_StepModel.hxx>
 #include <Standard_ErrorHandler.hxx>
 #include <TCollection_AsciiString.hxx>
 #include <TCollection_HAsciiString.hxx>
@@ -31,6 +32,7 @@
 
 #include <array>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -54,7 +56,7 @@ constexpr std::size_t kMaxOccurrences = 200'000;
 
 std::string label_name(const TDF_Label& label) {
     Handle(TDataStd_Name) name;
-    if (!label.FindAttribute(TDataStd_Name::GetID(), name)) return {};
+    if (!occt_guarded([&] { return label.FindAttribute(TDataStd_Name::GetID(), name); })) return {};
     return TCollection_AsciiString(name->Get()).ToCString();  // UTF-8
 }
 
@@ -118,16 +120,17 @@ public:
         if (depth > kMaxAssemblyDepth) throw std::runtime_error("assembly nesting deeper than 64 levels");
         monitor_.check();
         const Handle(XCAFDoc_ShapeTool)& shapes = styles_.shapes();
-        if (XCAFDoc_ShapeTool::IsAssembly(label)) {
+        if (occt_guarded([&] { return XCAFDoc_ShapeTool::IsAssembly(label); })) {
             std::vector<std::string> below = path;
             below.push_back(occurrence_name.empty() ? label_name(label) : occurrence_name);
             TDF_LabelSequence components;
-            XCAFDoc_ShapeTool::GetComponents(label, components, false);
+            occt_guarded([&] { XCAFDoc_ShapeTool::GetComponents(label, components, false); });
             for (int i = 1; i <= components.Length(); ++i) {
                 const TDF_Label component = components.Value(i);
                 TDF_Label part;
-                if (!XCAFDoc_ShapeTool::GetReferredShape(component, part)) continue;
-                const Eigen::Affine3d local = to_eigen(XCAFDoc_ShapeTool::GetLocation(component).Transformation());
+                if (!occt_guarded([&] { return XCAFDoc_ShapeTool::GetReferredShape(component, part); })) continue;
+                const Eigen::Affine3d local = occt_guarded(
+                    [&] { return to_eigen(XCAFDoc_ShapeTool::GetLocation(component).Transformation()); });
                 std::string name = label_name(component);
                 if (name.empty()) name = label_name(part);
                 walk(part, placement * local, below, name, depth + 1);
@@ -153,7 +156,7 @@ private:
         const std::string key = label_key(label);
         const auto found = parts_.find(key);
         if (found != parts_.end()) return found->second;
-        const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
+        const TopoDS_Shape shape = occt_guarded([&] { return XCAFDoc_ShapeTool::GetShape(label); });
         std::vector<int> bodies;
         if (!shape.IsNull())
             bodies = add_shape(model_, shape, styles_.style(), label_name(label), face_number_, &monitor_);
@@ -163,7 +166,7 @@ private:
 
     static std::string label_key(const TDF_Label& label) {
         TCollection_AsciiString entry;
-        TDF_Tool::Entry(label, entry);
+        occt_guarded([&] { TDF_Tool::Entry(label, entry); });
         return entry.ToCString();
     }
 
@@ -216,6 +219,63 @@ void check_step_header(const std::string& path) {
         throw geom::ReadError(path, 1, "not a STEP file (it does not start with 'ISO-10303-21;')");
 }
 
+// Throws a ReadError if the file's assembly structure (NEXT_ASSEMBLY_USAGE_OCCURRENCE:
+// relating product definition -> related one) refers to a missing entity, has a cycle,
+// or nests deeper than kMaxAssemblyDepth. OCCT 7.6's transfer follows it recursively without a check
+// (STEPControl_ActorRead::TransferEntity): a product that contains itself overflows
+// the stack, which no signal catcher survives (the process, Blender, is killed).
+// Found by fuzz_step: tests/fuzz/regressions/step/assembly_missing_component.stp.
+void check_assembly_graph(const std::string& path, const Handle(Interface_InterfaceModel)& model) {
+    if (model.IsNull()) return;
+    // The entity's #number in the file.
+    const Handle(StepData_StepModel) step = Handle(StepData_StepModel)::DownCast(model);
+    const auto label = [&](const Handle(Standard_Transient)& e) { return step.IsNull() ? model->Number(e) : step->IdentLabel(e); };
+    std::map<const Standard_Transient*, std::vector<const Standard_Transient*>> below;
+    std::map<const Standard_Transient*, int> number;
+    for (int i = 1; i <= model->NbEntities(); ++i) {
+        const auto nauo = Handle(StepRepr_NextAssemblyUsageOccurrence)::DownCast(model->Value(i));
+        if (nauo.IsNull()) continue;
+        // A reference to a missing entity: OCCT's transfer then recurses without end too.
+        if (nauo->RelatingProductDefinitionAP242().Value().IsNull() ||
+            nauo->RelatedProductDefinitionAP242().Value().IsNull())
+            throw geom::ReadError(path, 0, "NEXT_ASSEMBLY_USAGE_OCCURRENCE #" + std::to_string(label(nauo)) +
+                                               " refers to a product definition the file does not have");
+        const Handle(StepBasic_ProductDefinition) relating = nauo->RelatingProductDefinition();
+        const Handle(StepBasic_ProductDefinition) related = nauo->RelatedProductDefinition();
+        if (relating.IsNull() || related.IsNull()) continue;  // a PRODUCT_DEFINITION_REFERENCE (AP242)
+        below[relating.get()].push_back(related.get());
+        number.emplace(relating.get(), label(relating));
+        number.emplace(related.get(), label(related));
+    }
+    // Depth-first, iteratively (a hostile file may chain thousands): 1 on the path, 2 done.
+    std::map<const Standard_Transient*, int> state;
+    for (const auto& start : below) {
+        if (state[start.first] != 0) continue;
+        std::vector<std::pair<const Standard_Transient*, size_t>> stack{{start.first, 0}};
+        state[start.first] = 1;
+        while (!stack.empty()) {
+            auto& [node, next] = stack.back();
+            const auto found = below.find(node);
+            if (found == below.end() || next >= found->second.size()) {
+                state[node] = 2;
+                stack.pop_back();
+                continue;
+            }
+            const Standard_Transient* child = found->second[next++];
+            if (state[child] == 1)
+                throw geom::ReadError(path, 0, "the assembly contains itself: product definition #" +
+                                                   std::to_string(number[child]) +
+                                                   " is its own component (NEXT_ASSEMBLY_USAGE_OCCURRENCE cycle)");
+            if (state[child] == 2) continue;
+            if (static_cast<int>(stack.size()) >= kMaxAssemblyDepth)
+                throw geom::ReadError(path, 0, "assembly nesting deeper than " + std::to_string(kMaxAssemblyDepth) +
+                                                   " levels (NEXT_ASSEMBLY_USAGE_OCCURRENCE chain)");
+            state[child] = 1;
+            stack.emplace_back(child, 0);
+        }
+    }
+}
+
 // The XCAF document of one read. NewDocument registers it with the application,
 // which keeps every document it made until Close: without this, each STEP read
 // left its whole document (every shape) allocated for the life of the process.
@@ -241,6 +301,14 @@ private:
 constexpr double kParseShare = 0.3;
 constexpr double kTransferShare = 0.85;
 
+// Each stage of OCCT's work runs in a signal-catching scope of its own (occt_guarded):
+// the parse (ReadFile), the transfer (with its shape healing) and the walk of the
+// document; each face's translation and healing have theirs (occt_shape.cpp). A
+// memory fault in any of them is thrown as a Standard_Failure from that scope, and
+// everything made out here (the XCAF document, closed by ScratchDocument; the reader;
+// the progress indicator; the model) is destroyed as after any exception. A single
+// scope around the whole read (as before) skipped all of it: the longjmp passes over
+// destructors, which left the document registered with the application (leaked).
 geom::Model read_step_unguarded(const std::string& path, const ReadOptions& options) {
     ReadMonitor monitor(path, options);
     monitor.stage(0.0, kParseShare);
@@ -251,19 +319,21 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     STEPCAFControl_Reader reader;
     reader.SetColorMode(true);
     reader.SetNameMode(true);
-    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
-        const std::string why = read_failures(reader);
+    const IFSelect_ReturnStatus read = occt_guarded([&] { return reader.ReadFile(path.c_str()); });
+    if (read != IFSelect_RetDone) {
+        const std::string why = occt_guarded([&] { return read_failures(reader); });
         throw geom::ReadError(path, 0, "Open CASCADE cannot read this file as STEP" +
                                            (why.empty() ? std::string() : ": " + why));
     }
+    occt_guarded([&] { check_assembly_graph(path, reader.ChangeReader().WS()->Model()); });
     monitor.report(1.0);
     monitor.check();
     monitor.stage(kParseShare, kTransferShare);
     Handle(OcctProgress) progress = new OcctProgress(monitor);
-    const bool transferred = reader.Transfer(doc, progress->Start());
+    const bool transferred = occt_guarded([&] { return reader.Transfer(doc, progress->Start()); });
     monitor.check();  // a user break ends the transfer early, with or without shapes
     if (!transferred) {
-        const std::string why = read_failures(reader);
+        const std::string why = occt_guarded([&] { return read_failures(reader); });
         throw geom::ReadError(path, 0, "Open CASCADE transfers no shape from the STEP file" +
                                            (why.empty() ? std::string() : ": " + why));
     }
@@ -273,13 +343,14 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     model.units = "mm";  // OCCT converts lengths to xstep.cad.unit, millimetres by default
     model.scale_to_metres = 1e-3;
     TDF_LabelSequence roots;
-    styles.shapes()->GetFreeShapes(roots);
+    occt_guarded([&] { styles.shapes()->GetFreeShapes(roots); });
     monitor.stage(kTransferShare, 1.0);
     AssemblyWalker walker(model, styles, monitor);
     for (int i = 1; i <= roots.Length(); ++i) {
         monitor.report(static_cast<double>(i - 1) / roots.Length());
         const TDF_Label root = roots.Value(i);
-        const Eigen::Affine3d placement = to_eigen(XCAFDoc_ShapeTool::GetLocation(root).Transformation());
+        const Eigen::Affine3d placement =
+            occt_guarded([&] { return to_eigen(XCAFDoc_ShapeTool::GetLocation(root).Transformation()); });
         walker.walk(root, placement, {}, label_name(root), 0);
     }
     monitor.report(1.0);
@@ -301,6 +372,8 @@ geom::Model read_step(const std::string& path, const ReadOptions& options) {
     silence_occt_stdout();
     try {
         OcctSignalGuard guard;
+        // The last resort, for a fault in an OCCT call outside the scopes of
+        // read_step_unguarded (constructors, destructors): caught, without their cleanup.
         OCC_CATCH_SIGNALS
         return read_step_unguarded(path, options);
     } catch (const Standard_Failure& e) {
