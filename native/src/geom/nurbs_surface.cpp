@@ -61,6 +61,25 @@ NurbsSurface extract_u(const NurbsSurface& S, double a, double b) {
                         std::move(points), std::move(weights));
 }
 
+// The rows of S that are non-zero somewhere on u in [a, b] (domain_u() contains
+// [a, b]): spans ka (U[ka] <= a < U[ka+1]) to kb (U[kb] < b <= U[kb+1]) need rows
+// ka-pu .. kb and knots ka-pu .. kb+pu+1 ([PT] Sec. 2.2, local support). The result
+// equals S on [a, b] and is cheap to refine: knot insertion then touches only these rows.
+NurbsSurface crop_u(const NurbsSurface& S, double a, double b) {
+    const auto& U = S.knots_u();
+    const int p = S.degree_u(), nv = S.count_v(), last = S.count_u() - 1;
+    const int ka = std::clamp(static_cast<int>(std::upper_bound(U.begin(), U.end(), a) - U.begin()) - 1, p, last);
+    const int kb = std::clamp(static_cast<int>(std::lower_bound(U.begin(), U.end(), b) - U.begin()) - 1, ka, last);
+    if (ka == p && kb == last) return S;
+    std::vector<double> knots(U.begin() + (ka - p), U.begin() + (kb + p + 2));
+    const size_t begin = static_cast<size_t>(ka - p) * nv, end = static_cast<size_t>(kb + 1) * nv;
+    std::vector<Eigen::Vector3d> points(S.points().begin() + begin, S.points().begin() + end);
+    std::vector<double> weights;
+    if (S.is_rational()) weights.assign(S.weights().begin() + begin, S.weights().begin() + end);
+    return NurbsSurface(p, S.degree_v(), std::move(knots), S.knots_v(), kb - ka + p + 1, nv,
+                        std::move(points), std::move(weights));
+}
+
 // Exact distinct knot values inside [U[p], U[n+1]].
 std::vector<double> breakpoints(const std::vector<double>& U, int p) {
     const auto [a, b] = knot_domain(U, p);
@@ -369,7 +388,8 @@ NurbsSurface NurbsSurface::sub_surface(double u0, double u1, double v0, double v
         if (!(a < b))
             throw InvalidInput("NurbsSurface::sub_surface: range [" + format_value(a_in) +
                                ", " + format_value(b_in) + "] shorter than the knot tolerance");
-        S = extract_u(S.insert_knot_u(a, S.degree_u()).insert_knot_u(b, S.degree_u()), a, b)
+        const NurbsSurface local = crop_u(S, a, b);
+        S = extract_u(local.insert_knot_u(a, S.degree_u()).insert_knot_u(b, S.degree_u()), a, b)
                 .swapped_uv();
     }
     return S;

@@ -72,6 +72,22 @@ std::vector<double> product_factors(int a, int b) {
     return out;
 }
 
+// product_factors(a, b) for the degrees of a product f g with f of degree a and g of
+// degree a - 1 or a (the only pairs numerator() forms), computed once per process for
+// degrees up to kCachedDegree; other pairs are computed on the spot.
+constexpr int kCachedDegree = 12;
+const std::vector<double>& cached_product_factors(int a, int b, std::vector<double>& scratch) {
+    static const std::vector<std::vector<double>> table = [] {
+        std::vector<std::vector<double>> t((kCachedDegree + 1) * (kCachedDegree + 1));
+        for (int x = 0; x <= kCachedDegree; ++x)
+            for (int y = 0; y <= kCachedDegree; ++y) t[x * (kCachedDegree + 1) + y] = product_factors(x, y);
+        return t;
+    }();
+    if (a <= kCachedDegree && b <= kCachedDegree) return table[a * (kCachedDegree + 1) + b];
+    scratch = product_factors(a, b);
+    return scratch;
+}
+
 // f * g for a scalar net f and a vector net g, in Bernstein form. The binomial
 // factors are computed once per direction (the hot loop of the surface bound).
 Net product(const ScalarNet& f, const Net& g) {
@@ -79,7 +95,9 @@ Net product(const ScalarNet& f, const Net& g) {
     out.du = f.du + g.du;
     out.dv = f.dv + g.dv;
     out.c.assign((out.du + 1) * (out.dv + 1), Vec3::Zero());
-    const std::vector<double> fu = product_factors(f.du, g.du), fv = product_factors(f.dv, g.dv);
+    std::vector<double> scratch_u, scratch_v;
+    const std::vector<double>& fu = cached_product_factors(f.du, g.du, scratch_u);
+    const std::vector<double>& fv = cached_product_factors(f.dv, g.dv, scratch_v);
     for (int i = 0; i <= f.du; ++i)
         for (int i2 = 0; i2 <= g.du; ++i2) {
             const double cu = fu[i * (g.du + 1) + i2];

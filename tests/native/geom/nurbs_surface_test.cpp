@@ -272,6 +272,30 @@ TEST(NurbsSurface, SubSurfaceReproducesPiece) {
     EXPECT_THROW(S.sub_surface(0.1, 0.4, 1, 3), InvalidInput);
 }
 
+// sub_surface refines only the rows that support the range (crop_u): a piece inside one
+// span, on its knots or at the domain's ends comes out as one Bezier patch that equals S.
+TEST(NurbsSurface, SubSurfaceOfOneSpanIsOneBezierPatch) {
+    for (bool rational : {false, true}) {
+        const NurbsSurface S = sample_surface(rational);  // u knots 0, .3, .6, 1; v 2, 3, 4, 5
+        const double ranges[][4] = {{0.35, 0.55, 3.2, 3.8}, {0.3, 0.6, 3, 4}, {0, 0.3, 2, 3},
+                                    {0.6, 1, 4, 5}, {0.61, 0.99, 2.01, 2.99}};
+        for (const auto& r : ranges) {
+            const NurbsSurface T = S.sub_surface(r[0], r[1], r[2], r[3]);
+            EXPECT_EQ(T.count_u(), 4);
+            EXPECT_EQ(T.count_v(), 3);
+            EXPECT_EQ(T.knots_u(), bezier_knots(3, r[0], r[1]));
+            EXPECT_EQ(T.knots_v(), bezier_knots(2, r[2], r[3]));
+            EXPECT_LT(max_distance(T, S), 1e-12);
+        }
+        // Across two simple knots in u (0.3, 0.6) and one in v (3): they stay simple,
+        // so degree + 1 + 2 rows and degree + 1 + 1 columns.
+        const NurbsSurface W = S.sub_surface(0.2, 0.7, 2.5, 3.5);
+        EXPECT_EQ(W.count_u(), 3 + 1 + 2);
+        EXPECT_EQ(W.count_v(), 2 + 1 + 1);
+        EXPECT_LT(max_distance(W, S), 1e-12);
+    }
+}
+
 TEST(NurbsSurface, SwappedUvExchangesParameters) {
     const NurbsSurface S = sample_surface(true);
     const NurbsSurface T = S.swapped_uv();
