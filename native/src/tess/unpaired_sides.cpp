@@ -13,6 +13,10 @@ struct SideUse {
     auto key() const { return std::make_tuple(lo, hi, face, forward, side.triangle, side.corner); }
 };
 
+std::uint64_t edge_key(const SideUse& u) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u.lo)) << 32) | static_cast<std::uint32_t>(u.hi);
+}
+
 // Pairs forward with backward uses among `uses` (in order); appends the rest to `left`.
 void pair_opposite(const std::vector<SideUse>& uses, std::vector<SideUse>& left) {
     std::vector<SideUse> forward, backward;
@@ -36,7 +40,9 @@ std::vector<TriangleSide> unpaired_sides(const mesh::Mesh& mesh,
             uses.push_back({std::min(a, b), std::max(a, b), face, a < b, {static_cast<std::int32_t>(t), k}});
         }
     }
-    std::sort(uses.begin(), uses.end(), [](const SideUse& x, const SideUse& y) { return x.key() < y.key(); });
+    // Grouped by edge with a cheap key first; only the rare groups that are not a plain
+    // pair are put in full key order, which is all the pairing below depends on.
+    std::sort(uses.begin(), uses.end(), [](const SideUse& x, const SideUse& y) { return edge_key(x) < edge_key(y); });
 
     std::vector<TriangleSide> open;
     for (std::size_t i = 0; i < uses.size();) {
@@ -46,6 +52,8 @@ std::vector<TriangleSide> unpaired_sides(const mesh::Mesh& mesh,
             i = j;
             continue;
         }
+        std::sort(uses.begin() + i, uses.begin() + j,
+                  [](const SideUse& x, const SideUse& y) { return x.key() < y.key(); });
         // Within each face, then across faces.
         std::vector<SideUse> across;
         for (std::size_t f = i; f < j;) {
