@@ -10,9 +10,16 @@
 // seams meet, an open revolution, a B-spline plate, filleted hole rims, offset surfaces,
 // an ellipsoid of B-spline faces and a frustum with a hole on its seam; round 3 a coil
 // swept along a helix, a revolution closing on its axis, an elliptic extrusion and a
-// variable-radius fillet.)
+// variable-radius fillet; round 4 a boss across a sphere's seam, a pipe elbow, a plate
+// with a grid of holes and notches, a turned shaft, an equal-radius tee, a slotted tube,
+// a cone capped by a sphere, a part 0.06 mm across, one 5e5 from the origin and a
+// drafted box.)
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepOffsetAPI_DraftAngle.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Pln.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepLib.hxx>
 #include <BRepOffsetAPI_MakePipeShell.hxx>
@@ -393,6 +400,122 @@ TopoDS_Shape variable_fillet_box() {
     return round.Shape();
 }
 
+// ---- Round 4 (2026-12-02 evening): scale, placement and the shapes of turned and
+// welded parts ---------------------------------------------------------------------
+
+TopoDS_Shape transformed(const TopoDS_Shape& s, const gp_Trsf& t) { return BRepBuilderAPI_Transform(s, t, true).Shape(); }
+
+// A sphere with a cylindrical boss along +X: the boss's rim crosses the sphere's seam
+// (the half plane y = 0, x > 0), and a hole down the boss's axis.
+TopoDS_Shape boss_on_sphere() {
+    TopoDS_Shape body = fuse(BRepPrimAPI_MakeSphere(30).Shape(),
+                             BRepPrimAPI_MakeCylinder(axis_at(0, 0, 0, gp::DX()), 9, 45).Shape());
+    return cut(body, BRepPrimAPI_MakeCylinder(axis_at(10, 0, 0, gp::DX()), 4, 50).Shape());
+}
+
+// A pipe elbow: a quarter torus between two straight cylinders, with a hole through the bend.
+TopoDS_Shape pipe_elbow() {
+    const double R = 40, r = 10;
+    TopoDS_Shape bend = BRepPrimAPI_MakeTorus(gp_Ax2(gp::Origin(), gp::DZ()), R, r, M_PI / 2).Shape();
+    TopoDS_Shape a = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(R, 0, 0), -gp::DY()), r, 30).Shape();
+    TopoDS_Shape b = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, R, 0), -gp::DX()), r, 30).Shape();
+    TopoDS_Shape body = fuse(fuse(bend, a), b);
+    const double c = R / std::sqrt(2.0);
+    return cut(body, BRepPrimAPI_MakeCylinder(axis_at(c, c, -20), 3, 40).Shape());
+}
+
+// A plate with a 6 x 6 grid of holes and three half holes cut into its sides (notches
+// that make the outer loop concave).
+TopoDS_Shape holes_grid_plate() {
+    TopoDS_Shape plate = BRepPrimAPI_MakeBox(100, 100, 5).Shape();
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j)
+            plate = cut(plate, BRepPrimAPI_MakeCylinder(axis_at(15 + 14 * i, 15 + 14 * j, -1), 2.5 + 0.3 * ((i + j) % 3), 7).Shape());
+    plate = cut(plate, BRepPrimAPI_MakeCylinder(axis_at(0, 50, -1), 6, 7).Shape());
+    plate = cut(plate, BRepPrimAPI_MakeCylinder(axis_at(50, 100, -1), 6, 7).Shape());
+    return cut(plate, BRepPrimAPI_MakeCylinder(axis_at(100, 30, -1), 4, 7).Shape());
+}
+
+// A turned shaft: a profile of lines, a groove arc and chamfers revolved a full turn
+// (planes, cylinders, cones and a torus on one axis, their seams on one half plane), with a
+// cross hole and a flat milled across the seam.
+TopoDS_Shape turned_shaft() {
+    std::vector<gp_Pnt> p = {gp_Pnt(0, 0, 0),   gp_Pnt(8, 0, 0),   gp_Pnt(10, 0, 2),  gp_Pnt(10, 0, 30),
+                             gp_Pnt(14, 0, 34), gp_Pnt(14, 0, 60), gp_Pnt(6, 0, 80), gp_Pnt(0, 0, 80)};
+    BRepBuilderAPI_MakeWire wire;
+    for (size_t k = 0; k + 1 < p.size(); ++k) wire.Add(BRepBuilderAPI_MakeEdge(p[k], p[k + 1]).Edge());
+    wire.Add(BRepBuilderAPI_MakeEdge(p.back(), p.front()).Edge());
+    TopoDS_Shape body = BRepPrimAPI_MakeRevol(BRepBuilderAPI_MakeFace(wire.Wire()), gp_Ax1(gp::Origin(), gp::DZ())).Shape();
+    // A round groove (a torus) at z = 45.
+    body = cut(body, BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(0, 0, 45), gp::DZ()), 14, 2.5).Shape());
+    body = cut(body, BRepPrimAPI_MakeCylinder(axis_at(-20, 0, 15, gp::DX()), 2.5, 40).Shape());
+    return cut(body, BRepPrimAPI_MakeBox(gp_Pnt(11, -20, 38), 10, 40, 16).Shape());
+}
+
+// Two cylinders of equal radius meeting at right angles (a tee): their intersection
+// curves meet at two points where the faces' trims touch.
+TopoDS_Shape equal_tee() {
+    TopoDS_Shape a = BRepPrimAPI_MakeCylinder(axis_at(0, 0, -40), 12, 80).Shape();
+    TopoDS_Shape b = BRepPrimAPI_MakeCylinder(axis_at(0, 0, 0, gp::DX()), 12, 40).Shape();
+    return fuse(a, b);
+}
+
+// A tube with a stadium slot (two half circles and two lines) cut through its wall across
+// the seam, and a cone-tipped end.
+TopoDS_Shape slotted_tube() {
+    TopoDS_Shape tube = cut(BRepPrimAPI_MakeCylinder(axis_at(0, 0, 0), 15, 70).Shape(),
+                            BRepPrimAPI_MakeCylinder(axis_at(0, 0, -1), 11, 72).Shape());
+    TopoDS_Shape slot = fuse(fuse(BRepPrimAPI_MakeCylinder(axis_at(0, 0, 25, gp::DX()), 4, 30).Shape(),
+                                  BRepPrimAPI_MakeCylinder(axis_at(0, 0, 45, gp::DX()), 4, 30).Shape()),
+                             BRepPrimAPI_MakeBox(gp_Pnt(0, -4, 25), 30, 8, 20).Shape());
+    tube = cut(tube, slot);
+    return fuse(tube, BRepPrimAPI_MakeCone(axis_at(0, 0, 70), 15, 5, 12).Shape());
+}
+
+// A cone capped by a sphere that cuts it (a bullet), pierced across.
+TopoDS_Shape bullet() {
+    TopoDS_Shape cone = BRepPrimAPI_MakeCone(20, 8, 50).Shape();
+    TopoDS_Shape cap = BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 45), 12).Shape();
+    TopoDS_Shape body = fuse(cone, cap);
+    return cut(body, BRepPrimAPI_MakeCylinder(axis_at(-30, 0, 20, gp::DX()), 3, 60).Shape());
+}
+
+// plate_with_holes and a filleted box scaled to 0.06 mm across (every length 1e-3 of the
+// original): tolerances of 1e-7 mm and below.
+TopoDS_Shape tiny_part() {
+    gp_Trsf t;
+    t.SetScale(gp::Origin(), 1e-3);
+    return transformed(plate_with_holes(), t);
+}
+
+// The pipe elbow 200 times larger and 5e5 away from the origin along a tilted axis (an
+// aircraft part in global coordinates).
+TopoDS_Shape far_large_part() {
+    gp_Trsf scale, move;
+    scale.SetScale(gp::Origin(), 200);
+    move.SetTransformation(gp_Ax3(gp_Pnt(5e5, -3e5, 2e5), gp_Dir(1, 1, 1), gp_Dir(1, -1, 0)), gp_Ax3());
+    move.Invert();
+    return transformed(pipe_elbow(), move * scale);
+}
+
+// A box whose sides get a 5 degree draft (tilted planes) with a drafted cylindrical boss
+// on top (a cone from the draft).
+TopoDS_Shape drafted_box() {
+    TopoDS_Shape body = fuse(BRepPrimAPI_MakeBox(60, 40, 20).Shape(),
+                             BRepPrimAPI_MakeCylinder(axis_at(30, 20, 20), 10, 15).Shape());
+    BRepOffsetAPI_DraftAngle draft(body);
+    const gp_Pln neutral(gp_Pnt(0, 0, 0), gp::DZ());
+    for (TopExp_Explorer e(body, TopAbs_FACE); e.More(); e.Next()) {
+        const TopoDS_Face& f = TopoDS::Face(e.Current());
+        BRepAdaptor_Surface s(f);
+        const bool vertical_plane = s.GetType() == GeomAbs_Plane && std::abs(s.Plane().Axis().Direction().Z()) < 1e-9;
+        const bool side_cylinder = s.GetType() == GeomAbs_Cylinder;
+        if (vertical_plane || side_cylinder) draft.Add(f, gp::DZ(), 5.0 * M_PI / 180.0, neutral);
+    }
+    draft.Build();
+    return draft.Shape();
+}
+
 struct Part {
     const char* name;
     std::function<TopoDS_Shape()> make;
@@ -411,7 +534,12 @@ std::vector<Part> parts() {
             {"filleted_holes_block", filleted_holes_block}, {"offset_body", offset_body},
             {"pierced_ellipsoid", pierced_ellipsoid},     {"frustum_hole_on_seam", frustum_hole_on_seam},
             {"coil", coil},                               {"revolved_onto_axis", revolved_onto_axis},
-            {"elliptic_extrusion", elliptic_extrusion},   {"variable_fillet_box", variable_fillet_box}};
+            {"elliptic_extrusion", elliptic_extrusion},   {"variable_fillet_box", variable_fillet_box},
+            {"boss_on_sphere", boss_on_sphere},           {"pipe_elbow", pipe_elbow},
+            {"holes_grid_plate", holes_grid_plate},       {"turned_shaft", turned_shaft},
+            {"equal_tee", equal_tee},                     {"slotted_tube", slotted_tube},
+            {"bullet", bullet},                           {"tiny_part", tiny_part},
+            {"far_large_part", far_large_part},           {"drafted_box", drafted_box}};
 }
 
 bool write_step(const TopoDS_Shape& s, const std::string& path) {

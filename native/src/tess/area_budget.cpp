@@ -54,18 +54,22 @@ double lever_factor(const Lever& lever, double lambda) {
 // Tightens the levers of one group so that their predicted loss (linear in the
 // scale) reaches target_loss at the fewest added points; no lever below
 // its least factor in one round, nor below min_scale. True if any scale changed.
+// A group that gains area (its chords cut into its holes: a plate with many holes) is
+// tightened like one that loses, with the signs turned: `sign` is -1 then.
 bool tighten_group(const std::vector<int>& group, const std::vector<FaceArea>& faces, double target_loss,
                    double min_scale, FaceScales& scales) {
-    const double loss = group_area(group, faces).loss;
+    const double signed_loss = group_area(group, faces).loss;
+    const double sign = signed_loss < 0.0 ? -1.0 : 1.0;
+    const double loss = sign * signed_loss;
     std::vector<Lever> levers;
     double lever_loss = 0.0;
     for (int f : group) {
         const FaceArea& face = faces[f];
-        if (face.trim_loss > 0.0 && scales.trim[f] > min_scale)
-            levers.push_back({face.trim_loss, std::max(1.0, 1.0 * face.boundary_edges), kTrimGrowth, kTrimStep,
-                              &scales.trim[f], nullptr});
-        if (face.cell_loss > 0.0 && scales.cell[f] > min_scale)
-            levers.push_back({face.cell_loss, std::max(1.0, 1.0 * face.triangles), kCellGrowth, kTightenStep,
+        if (sign * face.trim_loss > 0.0 && scales.trim[f] > min_scale)
+            levers.push_back({sign * face.trim_loss, std::max(1.0, 1.0 * face.boundary_edges), kTrimGrowth,
+                              kTrimStep, &scales.trim[f], nullptr});
+        if (sign * face.cell_loss > 0.0 && scales.cell[f] > min_scale)
+            levers.push_back({sign * face.cell_loss, std::max(1.0, 1.0 * face.triangles), kCellGrowth, kTightenStep,
                               &scales.cell[f], &scales.trim[f]});
     }
     for (const Lever& lever : levers) lever_loss += lever.loss;
@@ -120,7 +124,7 @@ double worst_loss_share(const std::vector<std::vector<int>>& groups, const std::
     double worst = 0.0;
     for (const auto& group : groups) {
         const GroupArea sum = group_area(group, faces);
-        if (sum.area > 0.0) worst = std::max(worst, sum.loss / sum.area);
+        if (sum.area > 0.0) worst = std::max(worst, std::abs(sum.loss) / sum.area);
     }
     return worst;
 }
@@ -131,7 +135,7 @@ std::vector<int> tighten_to_area_budget(const std::vector<std::vector<int>>& gro
     std::vector<int> tightened;
     for (size_t g = 0; g < groups.size(); ++g) {
         const GroupArea sum = group_area(groups[g], faces);
-        if (!(sum.area > 0.0) || sum.loss <= share * sum.area) continue;
+        if (!(sum.area > 0.0) || std::abs(sum.loss) <= share * sum.area) continue;
         if (tighten_group(groups[g], faces, margin * share * sum.area, min_scale, scales))
             tightened.push_back(static_cast<int>(g));
     }

@@ -35,11 +35,11 @@ struct FaceScales {
 // body (all faces when the model has no bodies).
 std::vector<std::vector<int>> area_groups(const geom::Model& model);
 
-// Loss over area of the group that loses the largest share of its area (0 when none loses).
+// |Loss| over area of the group whose area is furthest off, lost or gained (0 when none is).
 double worst_loss_share(const std::vector<std::vector<int>>& groups, const std::vector<FaceArea>& faces);
 
-// Lowers the scales of faces in groups losing more than `share` of their area, so
-// that the group's predicted loss (linear in each scale) is `margin` x share of its
+// Lowers the scales of faces in groups losing (or gaining) more than `share` of their
+// area, so that the group's predicted |loss| (linear in each scale) is `margin` x share of its
 // area at the fewest added points (a face's trims and its cells apart, each by at
 // most a factor 4 per call, none below min_scale). Returns the groups tightened
 // (indices into groups).

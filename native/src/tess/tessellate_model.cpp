@@ -728,7 +728,7 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
         int faces = 0;
         for (size_t f = 0; f < model.faces.size(); ++f) faces += scale.trim[f] < 1.0 || scale.cell[f] < 1.0;
         result.warnings.push_back("the chords of " + std::to_string(std::count(tightened.begin(), tightened.end(), 1)) +
-                                  " part(s) lost up to " + geom::format_value(100.0 * first_worst) +
+                                  " part(s) lost or gained up to " + geom::format_value(100.0 * first_worst) +
                                   " % of their area; " + std::to_string(faces) +
                                   " face(s) meshed again with finer trims and cells (now " +
                                   geom::format_value(100.0 * worst) + " %)");

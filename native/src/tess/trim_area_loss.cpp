@@ -19,11 +19,18 @@ double trim_area_loss(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, 
         for (double s : {0.25, 0.5, 0.75}) {
             const Eigen::Vector2d uv = c.evaluate(p[i].t + s * (p[i + 1].t - p[i].t));
             const geom::SurfaceDerivatives d = S.derivatives(uv.x(), uv.y());
+            const Eigen::Vector3d normal = d.Su.cross(d.Sv);
+            if (!(normal.norm() > 0.0)) continue;
+            const Eigen::Vector3d n = normal.normalized();
             Eigen::Vector3d off = d.S - a;
             off -= off.dot(along) * along;
+            // Only the bulge within the surface moves the region's boundary; the part
+            // along the normal (a parallel circle of a cylinder bows straight out of the
+            // surface's tangent plane) is the cells' sag, counted by cell_area_loss.
+            off -= off.dot(n) * n;
             if (off.norm() <= sagitta) continue;
             sagitta = off.norm();
-            side = d.Su.cross(d.Sv).dot(chord.cross(off));  // > 0: the curve runs left of the chord
+            side = n.dot(chord.cross(off));  // > 0: the curve runs left of the chord
         }
         if (side == 0.0) continue;
         const double segment = 2.0 / 3.0 * sagitta * length;

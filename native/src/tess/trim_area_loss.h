@@ -18,7 +18,8 @@ namespace trimkit::tess {
 // Signed area (model units²) the chords of `polyline` (points on coedge curve c of
 // surface S, with their t) lose against S(c(t)): positive when the mesh is smaller.
 // Each chord's sagitta is the largest distance from its line of S(c(t)) at t = 1/4,
-// 1/2, 3/4 of its parameter span; the side is read against Su x Sv there.
+// 1/2, 3/4 of its parameter span, within the tangent plane there (the bulge along the
+// normal is the cells' sag: cell_area_loss.h); the side is read against Su x Sv.
 // region_left: the face's region lies to the left of the polyline in (u,v).
 double trim_area_loss(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, const TrimPolyline& polyline,
                       bool region_left);

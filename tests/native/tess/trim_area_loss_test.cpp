@@ -3,6 +3,9 @@
 // that is straight in (u,v) but bows in 3D).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "geom/analytic_surfaces.h"
 #include "geom/nurbs_curve.h"
 #include "geom/nurbs_surface.h"
 #include "geom/face.h"
@@ -53,6 +56,40 @@ TEST(TrimAreaLoss, ChordStraightInUvThatBowsIn3dCounts) {
     const geom::NurbsCurve2d c(1, {-1, -1, 1, 1}, {{-1, 0}, {1, 0}});
     // The region (v > 0) is left of the polyline; the curve bows away from it (-y).
     EXPECT_NEAR(trim_area_loss(S, c, ends_of(S, c), true), 4.0 * k / 3.0, 1e-12);
+}
+
+TEST(TrimAreaLoss, ParallelCircleOfACylinderBowsOutOfTheSurfaceAndLosesNothing) {
+    // A quarter of the unit cylinder, bounded below by the arc z = 0 from angle 0 to
+    // pi/2: straight in (u,v), and in 3D the arc bulges from its chord by 1 - cos(pi/4)
+    // along the surface normal only. The region above keeps its whole (u,v) area; the
+    // triangles' sag is cell_area_loss's. (On a surface of revolution whose profile
+    // slopes, the next test, part of the bulge lies in the surface.)
+    const geom::NurbsSurface S = geom::cylinder_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
+                                                      Eigen::Vector3d::UnitX(), 1.0, 0.0, M_PI / 2, 0.0, 1.0);
+    const auto [u0, u1] = S.domain_u();
+    const auto [v0, v1] = S.domain_v();
+    const geom::NurbsCurve2d bottom(1, {0, 0, 1, 1}, {{u0, v0}, {u1, v0}});
+    const TrimPolyline chord = ends_of(S, bottom);
+    ASSERT_NEAR((chord.points[1].xyz - chord.points[0].xyz).norm(), std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(trim_area_loss(S, bottom, chord, true), 0.0, 1e-12);
+    EXPECT_NEAR(trim_area_loss(S, bottom, chord, false), 0.0, 1e-12);
+}
+
+TEST(TrimAreaLoss, ParallelCircleOfAConeCountsOnlyTheBulgeAlongTheSurface) {
+    // A quarter of a cone narrowing upwards (semi-angle -pi/6, radius 1 at v = 0),
+    // bounded below by its parallel circle from angle 0 to pi/2. The arc bulges from
+    // its chord by s = 1 - cos(pi/4) away from the axis; within the surface that is
+    // s sin(pi/6) down the meridian, away from the region above: a loss of
+    // 2/3 x chord x s sin(pi/6) (the whole s, as before, is 2x that).
+    const double alpha = -M_PI / 6;
+    const geom::NurbsSurface S = geom::cone_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
+                                                  Eigen::Vector3d::UnitX(), 1.0, alpha, 0.0, M_PI / 2, 0.0, 0.5);
+    const auto [u0, u1] = S.domain_u();
+    const auto [v0, v1] = S.domain_v();
+    const geom::NurbsCurve2d bottom(1, {0, 0, 1, 1}, {{u0, v0}, {u1, v0}});
+    const double expected = 2.0 / 3.0 * std::sqrt(2.0) * (1.0 - std::cos(M_PI / 4)) * std::sin(-alpha);
+    EXPECT_NEAR(trim_area_loss(S, bottom, ends_of(S, bottom), true), expected, 1e-9);
+    EXPECT_NEAR(trim_area_loss(S, bottom, ends_of(S, bottom), false), -expected, 1e-9);
 }
 
 // One face on S(u,v) = (u, v + k u² (1 - v), 0), (u,v) in [-1, 1] x [0, 1]: bounded
