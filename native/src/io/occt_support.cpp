@@ -1,5 +1,7 @@
 #include "io/occt_support.h"
 
+#include <csignal>
+#include <cstddef>
 #include <mutex>
 
 #include <Message.hxx>
@@ -9,14 +11,41 @@
 
 namespace trimkit::io {
 
+namespace {
+
+// The handlers' own stack: OCCT's handler builds an exception and unwinds its error
+// handler chain, far less than this.
+constexpr std::size_t kSignalStackBytes = 256 * 1024;
+
+}  // namespace
+
 OcctSignalGuard::OcctSignalGuard() {
     for (int s = 1; s < NSIG; ++s) sigaction(s, nullptr, &saved_[s]);
     OSD::SetSignal(OSD_SignalMode_Set, /*theFloatingSignal=*/false);
+    // Use this thread's alternate stack if it has one (Blender's or Python's), else ours.
+    if (sigaltstack(nullptr, &saved_stack_) == 0 && (saved_stack_.ss_flags & SS_DISABLE)) {
+        signal_stack_.resize(kSignalStackBytes);
+        stack_t ours{};
+        ours.ss_sp = signal_stack_.data();
+        ours.ss_size = signal_stack_.size();
+        own_stack_ = sigaltstack(&ours, nullptr) == 0;
+    }
+    for (int s : {SIGSEGV, SIGBUS}) {
+        struct sigaction action;
+        if (sigaction(s, nullptr, &action) != 0) continue;
+        action.sa_flags |= SA_ONSTACK;
+        sigaction(s, &action, nullptr);
+    }
 }
 
 OcctSignalGuard::~OcctSignalGuard() {
     for (int s = 1; s < NSIG; ++s)
         if (s != SIGKILL && s != SIGSTOP) sigaction(s, &saved_[s], nullptr);
+    if (own_stack_) {
+        stack_t off{};
+        off.ss_flags = SS_DISABLE;
+        sigaltstack(&off, nullptr);
+    }
 }
 
 void silence_occt_stdout() {

@@ -28,6 +28,13 @@ public:
 
 private:
     struct sigaction saved_[NSIG] = {};
+    // A stack of its own for the signal handlers of this thread (sigaltstack), so that a
+    // fault from a stack overflow (OCCT 7.6 recurses without bound through some damaged
+    // STEP assemblies) still reaches OCCT's handler, which runs on it and jumps back to
+    // OCC_CATCH_SIGNALS, instead of the kernel killing the process.
+    std::vector<char> signal_stack_;
+    stack_t saved_stack_{};
+    bool own_stack_ = false;
 };
 
 // Runs `f` (calls into OCCT) under OCCT's signal catcher in a frame of its own and
