@@ -43,22 +43,28 @@ std::pair<double, double> knot_domain(const std::vector<double>& U, int p) {
     return {U[p], U[U.size() - p - 1]};
 }
 
+// Rows first .. end-1 of S with the u knot vector `knots` (which must fit them).
+NurbsSurface rows_u(const NurbsSurface& S, int first, int end, std::vector<double> knots) {
+    const int nv = S.count_v();
+    const size_t b = static_cast<size_t>(first) * nv, e = static_cast<size_t>(end) * nv;
+    std::vector<Eigen::Vector3d> points(S.points().begin() + b, S.points().begin() + e);
+    std::vector<double> weights;
+    if (S.is_rational()) weights.assign(S.weights().begin() + b, S.weights().begin() + e);
+    return NurbsSurface(S.degree_u(), S.degree_v(), std::move(knots), S.knots_v(), end - first, nv,
+                        std::move(points), std::move(weights));
+}
+
 // The part of S over u in [a, b], where a and b are u knots of multiplicity
 // >= pu: rows la-pu .. fb-1 (la the last knot index at a, fb the first at b).
 NurbsSurface extract_u(const NurbsSurface& S, double a, double b) {
     const auto& U = S.knots_u();
-    const int p = S.degree_u(), nv = S.count_v();
+    const int p = S.degree_u();
     const int la = static_cast<int>(std::upper_bound(U.begin(), U.end(), a) - U.begin()) - 1;
     const int fb = static_cast<int>(std::lower_bound(U.begin(), U.end(), b) - U.begin());
     std::vector<double> knots(p + 1, a);
     knots.insert(knots.end(), U.begin() + la + 1, U.begin() + fb);
     knots.insert(knots.end(), p + 1, b);
-    const size_t begin = static_cast<size_t>(la - p) * nv, end = static_cast<size_t>(fb) * nv;
-    std::vector<Eigen::Vector3d> points(S.points().begin() + begin, S.points().begin() + end);
-    std::vector<double> weights;
-    if (S.is_rational()) weights.assign(S.weights().begin() + begin, S.weights().begin() + end);
-    return NurbsSurface(p, S.degree_v(), std::move(knots), S.knots_v(), fb - (la - p), nv,
-                        std::move(points), std::move(weights));
+    return rows_u(S, la - p, fb, std::move(knots));
 }
 
 // The rows of S that are non-zero somewhere on u in [a, b] (domain_u() contains
@@ -67,17 +73,11 @@ NurbsSurface extract_u(const NurbsSurface& S, double a, double b) {
 // equals S on [a, b] and is cheap to refine: knot insertion then touches only these rows.
 NurbsSurface crop_u(const NurbsSurface& S, double a, double b) {
     const auto& U = S.knots_u();
-    const int p = S.degree_u(), nv = S.count_v(), last = S.count_u() - 1;
+    const int p = S.degree_u(), last = S.count_u() - 1;
     const int ka = std::clamp(static_cast<int>(std::upper_bound(U.begin(), U.end(), a) - U.begin()) - 1, p, last);
     const int kb = std::clamp(static_cast<int>(std::lower_bound(U.begin(), U.end(), b) - U.begin()) - 1, ka, last);
     if (ka == p && kb == last) return S;
-    std::vector<double> knots(U.begin() + (ka - p), U.begin() + (kb + p + 2));
-    const size_t begin = static_cast<size_t>(ka - p) * nv, end = static_cast<size_t>(kb + 1) * nv;
-    std::vector<Eigen::Vector3d> points(S.points().begin() + begin, S.points().begin() + end);
-    std::vector<double> weights;
-    if (S.is_rational()) weights.assign(S.weights().begin() + begin, S.weights().begin() + end);
-    return NurbsSurface(p, S.degree_v(), std::move(knots), S.knots_v(), kb - ka + p + 1, nv,
-                        std::move(points), std::move(weights));
+    return rows_u(S, ka - p, kb + 1, std::vector<double>(U.begin() + (ka - p), U.begin() + (kb + p + 2)));
 }
 
 // Exact distinct knot values inside [U[p], U[n+1]].

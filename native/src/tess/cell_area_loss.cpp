@@ -5,14 +5,10 @@
 #include <unordered_set>
 
 #include "tess/surface_evaluator.h"
+#include "tess/unpaired_sides.h"
 
 namespace trimkit::tess {
 namespace {
-
-std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
-    if (a > b) std::swap(a, b);
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
 
 // Area of S over the (u,v) triangle abc less the flat triangle's (degree-2 rule:
 // barycentric (2/3, 1/6, 1/6) and its permutations, weight 1/3 each).

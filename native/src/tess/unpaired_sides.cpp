@@ -13,10 +13,6 @@ struct SideUse {
     auto key() const { return std::make_tuple(lo, hi, face, forward, side.triangle, side.corner); }
 };
 
-std::uint64_t edge_key(const SideUse& u) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u.lo)) << 32) | static_cast<std::uint32_t>(u.hi);
-}
-
 // Pairs forward with backward uses among `uses` (in order); appends the rest to `left`.
 void pair_opposite(const std::vector<SideUse>& uses, std::vector<SideUse>& left) {
     std::vector<SideUse> forward, backward;
@@ -42,7 +38,8 @@ std::vector<TriangleSide> unpaired_sides(const mesh::Mesh& mesh,
     }
     // Grouped by edge with a cheap key first; only the rare groups that are not a plain
     // pair are put in full key order, which is all the pairing below depends on.
-    std::sort(uses.begin(), uses.end(), [](const SideUse& x, const SideUse& y) { return edge_key(x) < edge_key(y); });
+    std::sort(uses.begin(), uses.end(),
+              [](const SideUse& x, const SideUse& y) { return edge_key(x.lo, x.hi) < edge_key(y.lo, y.hi); });
 
     std::vector<TriangleSide> open;
     for (std::size_t i = 0; i < uses.size();) {

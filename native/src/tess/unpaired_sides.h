@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "mesh/mesh.h"
@@ -21,6 +22,12 @@ struct TriangleSide {
     std::int32_t triangle = 0;
     int corner = 0;
 };
+
+// One key for the edge between vertices a and b, whichever way it runs.
+inline std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
+    if (a > b) std::swap(a, b);
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
 
 // Sides without a partner, sorted by (triangle, corner). `topology` holds the
 // position group of every triangle corner (position_triangles); degenerate sides
