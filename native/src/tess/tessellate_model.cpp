@@ -22,6 +22,7 @@
 #include "tess/fill_sliver_holes.h"
 #include "tess/pcurve_edge_gap.h"
 #include "tess/repair_trim_loop.h"
+#include "tess/sew_free_coedges.h"
 #include "tess/share_edge_points.h"
 #include "tess/snap_boundary_vertices.h"
 #include "tess/tessellate_face.h"
@@ -686,10 +687,8 @@ void add_seconds(TessellationTimings& total, const TessellationTimings& pass) {
     total.verify += pass.verify;
 }
 
-}  // namespace
-
-TessellationResult tessellate_model(const geom::Model& model, const TessellationOptions& options) {
-    validate(options);
+// The model meshed as it is (tessellate_model after sewing).
+TessellationResult tessellate_sewn(const geom::Model& model, const TessellationOptions& options) {
     const double weld_distance = kWeldShare * options.tolerance;
     TessellationOptions face_options = options;
     face_options.tolerance = face_tolerance(options);
@@ -735,6 +734,27 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
     }
     result.tolerance = options.tolerance;
     return result;
+}
+
+bool has_free_coedges(const geom::Model& model) {
+    for (const geom::Face& face : model.faces)
+        for (const geom::Loop& loop : face.loops)
+            for (const geom::Coedge& coedge : loop.coedges)
+                if (coedge.edge < 0) return true;
+    return false;
+}
+
+}  // namespace
+
+TessellationResult tessellate_model(const geom::Model& model, const TessellationOptions& options) {
+    validate(options);
+    // Coedges the file does not share but that run along each other become shared
+    // edges within the join's reach (sew_free_coedges.h), on a copy of the model.
+    if (has_free_coedges(model)) {
+        geom::Model sewn = model;
+        if (sew_free_coedges(sewn, kWeldShare * options.tolerance).pairs > 0) return tessellate_sewn(sewn, options);
+    }
+    return tessellate_sewn(model, options);
 }
 
 double model_diagonal(const geom::Model& model) {

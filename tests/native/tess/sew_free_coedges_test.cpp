@@ -1,0 +1,128 @@
+// Sewing free coedges (tess/sew_free_coedges.h): two loose faces of one curved strip
+// (IGES faces mode: no shared edges), parameterized differently along their common
+// curve, get one shared edge and then one polyline for it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "geom/face.h"
+#include "geom/model.h"
+#include "tess/sew_free_coedges.h"
+#include "tess/tessellate_model.h"
+
+namespace trimkit::tess {
+namespace {
+
+// z = y^2 over x in [0, 1] (face 0: y = v) and x in [1, 2] (face 1: y = v^2, so its
+// trim curve at x = 1 runs at another speed), face 1 lifted by `lift` in z. Both
+// bounded by their natural loops; the common curve is x = 1, z = y^2.
+geom::Model parabolic_strip(double lift) {
+    geom::Model model;
+    geom::Face a;
+    a.surface = geom::NurbsSurface(1, 2, {0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}, 2, 3,
+                                   {{0, 0, 0}, {0, 0.5, 0}, {0, 1, 1}, {1, 0, 0}, {1, 0.5, 0}, {1, 1, 1}});
+    // y = v^2 and z = v^4 in degree-4 Bernstein form: y_k = k(k-1)/12, z = (0,0,0,0,1).
+    const double y[5] = {0, 0, 1.0 / 6.0, 0.5, 1};
+    const double z[5] = {0, 0, 0, 0, 1};
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < 2; ++i)
+        for (int k = 0; k < 5; ++k) points.emplace_back(1.0 + i, y[k], z[k] + lift);
+    geom::Face b;
+    b.surface = geom::NurbsSurface(1, 4, {0, 0, 1, 1}, {0, 0, 0, 0, 0, 1, 1, 1, 1, 1}, 2, 5, points);
+    for (geom::Face* face : {&a, &b}) {
+        face->loops.push_back(geom::natural_boundary_loop(face->surface));
+        model.faces.push_back(*face);
+    }
+    return model;
+}
+
+// The mesh's vertex positions on x = 1 of face `face`.
+std::set<std::tuple<double, double, double>> common_curve_points(const mesh::Mesh& m, int face) {
+    std::set<std::tuple<double, double, double>> points;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        if (m.face_ids[t] != face) continue;
+        for (std::int32_t v : m.triangles[t]) {
+            const Eigen::Vector3d& p = m.positions[v];
+            if (std::abs(p.x() - 1.0) < 1e-12) points.insert({p.x(), p.y(), p.z()});
+        }
+    }
+    return points;
+}
+
+TessellationOptions options_at(double tolerance) {
+    TessellationOptions options;
+    options.tolerance = tolerance;
+    options.threads = 1;
+    return options;
+}
+
+TEST(SewFreeCoedges, PairsTheCommonCurveOfTwoLooseFacesOnce) {
+    geom::Model model = parabolic_strip(0.0);
+    const SewingReport report = sew_free_coedges(model, 1e-3);
+    EXPECT_EQ(report.pairs, 1);
+    EXPECT_LT(report.max_gap, 1e-12);  // both traces are the parabola itself
+    ASSERT_EQ(model.edges.size(), 1u);
+    // Face 0's side u = 1 (its loop's second coedge) and face 1's side u = 0 (its fourth),
+    // which runs the other way round.
+    EXPECT_EQ(model.faces[0].loops[0].coedges[1].edge, 0);
+    EXPECT_FALSE(model.faces[0].loops[0].coedges[1].edge_reversed);
+    EXPECT_EQ(model.faces[1].loops[0].coedges[3].edge, 0);
+    EXPECT_TRUE(model.faces[1].loops[0].coedges[3].edge_reversed);
+    int shared = 0;
+    for (const geom::Face& face : model.faces)
+        for (const geom::Coedge& c : face.loops[0].coedges) shared += c.edge >= 0;
+    EXPECT_EQ(shared, 2);
+}
+
+TEST(SewFreeCoedges, FacesFartherApartThanTheDistanceStayLoose) {
+    geom::Model model = parabolic_strip(0.01);
+    EXPECT_EQ(sew_free_coedges(model, 1e-3).pairs, 0);
+    EXPECT_TRUE(model.edges.empty());
+}
+
+// Sides of the mesh on x = 1 that only one triangle has (by position).
+int open_sides_on_common_curve(const mesh::Mesh& m) {
+    std::map<std::pair<std::tuple<double, double, double>, std::tuple<double, double, double>>, int> uses;
+    for (const auto& t : m.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const Eigen::Vector3d& p = m.positions[t[k]];
+            const Eigen::Vector3d& q = m.positions[t[(k + 1) % 3]];
+            if (std::abs(p.x() - 1.0) > 1e-12 || std::abs(q.x() - 1.0) > 1e-12) continue;
+            auto a = std::make_tuple(p.x(), p.y(), p.z()), b = std::make_tuple(q.x(), q.y(), q.z());
+            ++uses[{std::min(a, b), std::max(a, b)}];
+        }
+    return static_cast<int>(std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second == 1; }));
+}
+
+// Meshed, the two faces take one polyline for the curve: face 0's own points, with
+// the points where either face's cells cross it, and not face 1's own polyline,
+// which differs (it runs along the curve at another speed). Without sewing the join
+// puts the union of both polylines on the curve.
+TEST(SewFreeCoedges, SewnFacesShareTheFirstFacesPolyline) {
+    const TessellationOptions options = options_at(1e-3);
+    const geom::Model model = parabolic_strip(0.0);
+    geom::Model first_alone = model, second_alone = model;
+    first_alone.faces.pop_back();
+    second_alone.faces.erase(second_alone.faces.begin());
+    const auto own_first = common_curve_points(tessellate_model(first_alone, options).mesh, 0);
+    const auto own_second = common_curve_points(tessellate_model(second_alone, options).mesh, 0);
+    std::set<std::tuple<double, double, double>> both = own_first;
+    both.insert(own_second.begin(), own_second.end());
+    ASSERT_GE(own_first.size(), 3u);
+    ASSERT_GT(both.size(), own_first.size());
+
+    const TessellationResult r = tessellate_model(model, options);
+    EXPECT_EQ(r.faces_meshed, 2);
+    EXPECT_EQ(open_sides_on_common_curve(r.mesh), 0);
+    const auto sewn = common_curve_points(r.mesh, 0);
+    EXPECT_EQ(common_curve_points(r.mesh, 1), sewn);
+    EXPECT_TRUE(std::includes(sewn.begin(), sewn.end(), own_first.begin(), own_first.end()));
+    EXPECT_LT(sewn.size(), both.size()) << own_first.size() << " " << own_second.size();
+}
+
+}  // namespace
+}  // namespace trimkit::tess
