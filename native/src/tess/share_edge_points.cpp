@@ -57,7 +57,8 @@ SharedEdgePolyline share_edge_points(const geom::NurbsSurface& S, const geom::Co
         throw geom::InvalidInput("share_edge_points: edge " + std::to_string(coedge.edge) + " has " +
                                  std::to_string(n) + " points; expected at least 2");
     std::vector<Eigen::Vector3d> X = edge_points;
-    if (coedge.edge_reversed) std::reverse(X.begin(), X.end());
+    bool reversed = coedge.edge_reversed;  // X runs against edge_points
+    if (reversed) std::reverse(X.begin(), X.end());
 
     const CurveOnSurface G{S, coedge.curve};
     const auto [ta, tb] = coedge.curve.domain();
@@ -93,10 +94,12 @@ SharedEdgePolyline share_edge_points(const geom::NurbsSurface& S, const geom::Co
             flip = k1 > k2;
         }
         if (flip) std::reverse(X.begin(), X.end());
+        reversed = reversed != flip;
     }
 
     SharedEdgePolyline result;
     result.polyline.edge = coedge.edge;
+    result.feet.resize(n);
     double t_prev = ta;
     int k_prev = 0;
     for (int i = 0; i < n; ++i) {
@@ -139,10 +142,19 @@ SharedEdgePolyline share_edge_points(const geom::NurbsSurface& S, const geom::Co
         p.t = t;
         p.uv = coedge.curve.evaluate(t);
         p.xyz = X[i];
-        result.max_gap = std::max(result.max_gap, (G.point(t) - X[i]).norm());
+        const Eigen::Vector3d foot = G.point(t);
+        result.max_gap = std::max(result.max_gap, (foot - X[i]).norm());
+        result.feet[reversed ? n - 1 - i : i] = foot;
         result.polyline.points.push_back(p);
     }
     return result;
+}
+
+void move_edge_points_midway(std::vector<Eigen::Vector3d>& edge_points, const std::vector<Eigen::Vector3d>& feet) {
+    if (feet.size() != edge_points.size())
+        throw geom::InvalidInput("move_edge_points_midway: " + std::to_string(feet.size()) + " feet for " +
+                                 std::to_string(edge_points.size()) + " edge points");
+    for (size_t i = 1; i + 1 < edge_points.size(); ++i) edge_points[i] = 0.5 * (edge_points[i] + feet[i]);
 }
 
 }  // namespace trimkit::tess

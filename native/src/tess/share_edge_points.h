@@ -23,6 +23,7 @@ std::vector<Eigen::Vector3d> edge_points_from(const TrimPolyline& polyline, bool
 struct SharedEdgePolyline {
     TrimPolyline polyline;  // in the coedge's traversal direction, edge = coedge.edge
     double max_gap = 0.0;   // largest |S_B(uv) - xyz|: the file's edge gap on this face
+    std::vector<Eigen::Vector3d> feet;  // S_B(uv) of each edge point, in the edge points' order
 };
 
 // Face B's polyline for `coedge` (on surface S) through the given edge points (in
@@ -34,5 +35,14 @@ struct SharedEdgePolyline {
 // exceeds the tolerance. Throws InvalidInput for fewer than 2 points.
 SharedEdgePolyline share_edge_points(const geom::NurbsSurface& S, const geom::Coedge& coedge,
                                      const std::vector<Eigen::Vector3d>& edge_points);
+
+// Edges whose two faces do not meet. A file may give an edge that lies on one face
+// and farther than the tolerance from the other (bm2_ec_exhaust-A: 3.77 mm from four
+// faces at T = 2.62 mm, within the file's own edge tolerance). A boundary both faces
+// share cannot then lie on both surfaces; it lies within half their gap of each when
+// every edge point is the mean of the first face's point and its foot on the second
+// face (`feet`, from share_edge_points). The two end points stay: they are vertices
+// that other edges and the faces' unshared trims meet.
+void move_edge_points_midway(std::vector<Eigen::Vector3d>& edge_points, const std::vector<Eigen::Vector3d>& feet);
 
 }  // namespace trimkit::tess

@@ -375,6 +375,43 @@ int boundary_edge_count(const mesh::Mesh& mesh) {
     return count;
 }
 
+// Edges without a 3D curve (sewn ones, sew_free_coedges.h) whose faces lie farther
+// apart along them than kEdgeGapShare T get their points midway between the two
+// faces (move_edge_points_midway, share_edge_points.h), so each face's boundary is
+// half their gap off it; the first face's polyline takes the moved points. An edge
+// with a 3D curve keeps the points of the face that follows the curve: the file says
+// where the boundary is. Faces more than T apart are reported.
+void meet_midway(const geom::Model& model, const std::vector<int>& shared, const std::vector<CoedgeRef>& first,
+                 const std::vector<CoedgeRef>& second, const TessellationOptions& options,
+                 std::vector<std::vector<Eigen::Vector3d>>& edge_points,
+                 std::vector<std::optional<TrimPolyline>>& edge_polyline, const std::vector<bool>& reversed_on_first,
+                 int threads, std::vector<std::string>& warnings) {
+    const double least_gap = kEdgeGapShare * options.tolerance;
+    std::vector<double> moved_gap(model.edges.size(), 0.0);
+    parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
+        const int e = shared[k];
+        if (model.edges[e].curve || second[e].face < 0 || !edge_polyline[e] || edge_points[e].size() < 2) return;
+        const geom::Face& face = model.faces[second[e].face];
+        try {
+            const SharedEdgePolyline mapped = share_edge_points(
+                face.surface, face.loops[second[e].loop].coedges[second[e].coedge], edge_points[e]);
+            if (mapped.max_gap <= least_gap) return;
+            move_edge_points_midway(edge_points[e], mapped.feet);
+            std::vector<PolylinePoint>& points = edge_polyline[e]->points;
+            const size_t n = points.size();
+            for (size_t i = 0; i < n; ++i) points[i].xyz = edge_points[e][reversed_on_first[e] ? n - 1 - i : i];
+            moved_gap[e] = mapped.max_gap;
+        } catch (const std::exception&) {
+            // The second face maps the points itself and reports what fails.
+        }
+    });
+    for (int e : shared)
+        if (moved_gap[e] > options.tolerance)
+            warnings.push_back("edge " + std::to_string(e) + ": faces " + std::to_string(first[e].face) + " and " +
+                               std::to_string(second[e].face) + " lie up to " + geom::format_value(moved_gap[e]) +
+                               " apart along it (more than the tolerance); the mesh runs midway between them");
+}
+
 // Meshes face f one way (`attempt`), welds it and verifies the mesh. Any failure
 // (an exception, no triangles, a rejected mesh) is out.error, naming the face.
 // trim_scale, cell_scale: the shares of their tolerance the face's own trims and its
@@ -566,6 +603,8 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
             edge_points[e] = edge_points_from(*edge_polyline[e], reversed_on_first[e]);
         }
     }
+    meet_midway(model, shared, first, second, options, edge_points, edge_polyline, reversed_on_first, threads,
+                result.warnings);
     unify_edge_ends(model, edge_points, edge_polyline, reversed_on_first, options.tolerance);
     const double edge_seconds = seconds_since(start);
     // A face is meshed as in the previous pass when its scales and all its edges' points are.
@@ -749,10 +788,13 @@ bool has_free_coedges(const geom::Model& model) {
 TessellationResult tessellate_model(const geom::Model& model, const TessellationOptions& options) {
     validate(options);
     // Coedges the file does not share but that run along each other become shared
-    // edges within the join's reach (sew_free_coedges.h), on a copy of the model.
+    // edges (sew_free_coedges.h), on a copy of the model. Their points run midway
+    // between the two faces (meet_midway), so pairs up to 2 x kWeldShare T apart
+    // leave each face's boundary within the join's reach of it.
     if (has_free_coedges(model)) {
         geom::Model sewn = model;
-        if (sew_free_coedges(sewn, kWeldShare * options.tolerance).pairs > 0) return tessellate_sewn(sewn, options);
+        if (sew_free_coedges(sewn, 2.0 * kWeldShare * options.tolerance).pairs > 0)
+            return tessellate_sewn(sewn, options);
     }
     return tessellate_sewn(model, options);
 }

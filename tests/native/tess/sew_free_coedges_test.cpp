@@ -124,5 +124,42 @@ TEST(SewFreeCoedges, SewnFacesShareTheFirstFacesPolyline) {
     EXPECT_LT(sewn.size(), both.size()) << own_first.size() << " " << own_second.size();
 }
 
+// Distance from p to the cylinder over the parabola z = y^2 + lift (along x): the
+// nearest point of the curve in the (y, z) plane, by a fine scan and bisection-free
+// refinement of the parameter.
+double distance_to_parabola(const Eigen::Vector3d& p, double lift) {
+    const auto d2 = [&](double s) { return std::pow(p.y() - s, 2) + std::pow(p.z() - s * s - lift, 2); };
+    double best = p.y(), step = 0.01;
+    for (double s = p.y() - 0.1; s <= p.y() + 0.1; s += 1e-4)
+        if (d2(s) < d2(best)) best = s;
+    for (int it = 0; it < 60; ++it, step *= 0.5)
+        for (double s : {best - step, best + step})
+            if (d2(s) < d2(best)) best = s;
+    return std::sqrt(d2(best));
+}
+
+// Sewn faces apart by less than the sewing distance meet midway: the shared
+// polyline's points (its ends, vertices of the unshared sides, aside) are half the
+// gap from each face, not on the first and the whole gap off the second. (Points
+// the cells add on its chords lie on the chords, off both.)
+TEST(SewFreeCoedges, SewnFacesApartMeetMidway) {
+    const TessellationOptions options = options_at(1e-2);
+    const double lift = 0.15 * options.tolerance;  // within the sewing distance, 0.2 T
+    const TessellationResult r = tessellate_model(parabolic_strip(lift), options);
+    EXPECT_EQ(r.faces_meshed, 2);
+    int midway = 0, on_first = 0;
+    for (const auto& [x, y, z] : common_curve_points(r.mesh, 1)) {
+        if (y <= 0.0 || y >= 1.0) continue;
+        const Eigen::Vector3d p(x, y, z);
+        const double d0 = distance_to_parabola(p, 0.0), d1 = distance_to_parabola(p, lift);
+        // The faces' gap along the normal is lift / sqrt(1 + 4 y^2): half of it each way.
+        const double half_gap = 0.5 * lift / std::sqrt(1.0 + 4.0 * y * y);
+        midway += std::abs(d0 - half_gap) < 0.02 * half_gap && std::abs(d1 - half_gap) < 0.02 * half_gap;
+        on_first += d0 < 1e-3 * lift;
+    }
+    EXPECT_GE(midway, 3);
+    EXPECT_EQ(on_first, 0);
+}
+
 }  // namespace
 }  // namespace trimkit::tess
