@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <tuple>
 #include <unordered_map>
 #include <utility>
@@ -174,11 +175,166 @@ std::vector<Candidate> candidates(const geom::Model& model, const std::vector<Tr
     return found;
 }
 
+// ---- Splitting: a trace end on another trace's interior (a T-vertex of the faces
+// that the file left unsplit, or the start of a closed curve that the other face's
+// closed curve starts elsewhere) splits that coedge there, so that the pairing
+// below sees whole curves on both sides.
+
+// Samples per trace for finding the trace an end lies on, at most.
+constexpr int kMaxLookupSamples = 4096;
+// Golden-section steps refining an end's parameter on the other trace.
+constexpr int kRefineSteps = 60;
+// Splits of one coedge, at most (a curve with more T-vertices is left whole).
+constexpr std::size_t kMaxSplits = 64;
+
+struct Lookup {
+    int trace = 0;
+    double t = 0.0;
+};
+
+// Sample points of every trace, `spacing` apart at most (up to kMaxLookupSamples),
+// bucketed in a grid of `spacing` cubes.
+class TraceGrid {
+public:
+    TraceGrid(const geom::Model& model, const std::vector<Trace>& traces, double spacing) : grid_(spacing) {
+        for (std::size_t i = 0; i < traces.size(); ++i) {
+            const Trace& trace = traces[i];
+            const geom::Face& face = model.faces[trace.face];
+            const geom::Coedge& coedge = face.loops[trace.loop].coedges[trace.coedge];
+            const int n = std::clamp(static_cast<int>(std::ceil(trace.length / spacing)), kTraceIntervals,
+                                     kMaxLookupSamples);
+            const auto [t0, t1] = coedge.curve.domain();
+            const std::vector<Eigen::Vector3d> points = trace_points(face, coedge, n);
+            for (int k = 0; k <= n; ++k) {
+                samples_.push_back({static_cast<int>(i), k == n ? t1 : t0 + (t1 - t0) * k / n});
+                grid_.add(points[k], static_cast<int>(samples_.size()) - 1);
+                positions_.push_back(points[k]);
+            }
+        }
+    }
+    // Samples near p (none where crowded, EndGrid::near), as (trace, t).
+    std::vector<std::pair<Lookup, Eigen::Vector3d>> near(const Eigen::Vector3d& p) const {
+        std::vector<std::pair<Lookup, Eigen::Vector3d>> found;
+        for (int k : grid_.near(p)) found.push_back({samples_[k], positions_[k]});
+        return found;
+    }
+
+private:
+    EndGrid grid_;
+    std::vector<Lookup> samples_;
+    std::vector<Eigen::Vector3d> positions_;
+};
+
+// The parameter of `trace` nearest x in [a, b], by golden-section search.
+double nearest_parameter(const geom::Model& model, const Trace& trace, const Eigen::Vector3d& x, double a, double b) {
+    const geom::Face& face = model.faces[trace.face];
+    const geom::NurbsCurve2d& c = face.loops[trace.loop].coedges[trace.coedge].curve;
+    const auto d2 = [&](double t) {
+        const Eigen::Vector2d uv = c.evaluate(t);
+        return (face.surface.evaluate(uv.x(), uv.y()) - x).squaredNorm();
+    };
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    double lo = a, hi = b, m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    double f1 = d2(m1), f2 = d2(m2);
+    for (int it = 0; it < kRefineSteps; ++it) {
+        if (f1 < f2) {
+            hi = m2, m2 = m1, f2 = f1, m1 = hi - g * (hi - lo), f1 = d2(m1);
+        } else {
+            lo = m1, m1 = m2, f1 = f2, m2 = lo + g * (hi - lo), f2 = d2(m2);
+        }
+    }
+    return 0.5 * (lo + hi);
+}
+
+Eigen::Vector3d trace_at(const geom::Model& model, const Trace& trace, double t) {
+    const geom::Face& face = model.faces[trace.face];
+    const Eigen::Vector2d uv = face.loops[trace.loop].coedges[trace.coedge].curve.evaluate(t);
+    return face.surface.evaluate(uv.x(), uv.y());
+}
+
+// For each trace, the parameters where other traces' ends lie on its interior (more
+// than 2 x distance from its own ends in 3D), sorted.
+std::vector<std::vector<double>> split_parameters(const geom::Model& model, const std::vector<Trace>& traces,
+                                                  double distance) {
+    std::vector<double> lengths;
+    for (const Trace& trace : traces) lengths.push_back(trace.length);
+    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+    const double spacing = std::max(4.0 * distance, lengths[lengths.size() / 2] / kTraceIntervals);
+    const TraceGrid grid(model, traces, spacing);
+    std::vector<std::vector<double>> splits(traces.size());
+    for (std::size_t j = 0; j < traces.size(); ++j)
+        for (const Eigen::Vector3d& end : {traces[j].points.front(), traces[j].points.back()}) {
+            std::vector<std::pair<Lookup, Eigen::Vector3d>> near = grid.near(end);
+            std::sort(near.begin(), near.end(), [&](const auto& x, const auto& y) {
+                return (x.second - end).squaredNorm() < (y.second - end).squaredNorm();
+            });
+            std::vector<int> seen;
+            for (const auto& [sample, position] : near) {
+                const Trace& on = traces[sample.trace];
+                if (sample.trace == static_cast<int>(j) ||
+                    std::find(seen.begin(), seen.end(), sample.trace) != seen.end())
+                    continue;
+                seen.push_back(sample.trace);  // each trace once: its nearest sample
+                if ((on.points.front() - end).norm() <= 2.0 * distance || (on.points.back() - end).norm() <= 2.0 * distance)
+                    continue;
+                const geom::Coedge& coedge = model.faces[on.face].loops[on.loop].coedges[on.coedge];
+                const auto [t0, t1] = coedge.curve.domain();
+                const double step = 2.0 * spacing / on.length * (t1 - t0);
+                const double t = nearest_parameter(model, on, end, std::max(t0, sample.t - step), std::min(t1, sample.t + step));
+                if ((trace_at(model, on, t) - end).norm() <= distance && splits[sample.trace].size() < kMaxSplits)
+                    splits[sample.trace].push_back(t);
+            }
+        }
+    for (std::vector<double>& ts : splits) std::sort(ts.begin(), ts.end());
+    return splits;
+}
+
+// Replaces each trace's coedge by its pieces between the split parameters (pieces
+// shorter than 2 x distance in 3D are merged into the next).
+int apply_splits(geom::Model& model, const std::vector<Trace>& traces,
+                 const std::vector<std::vector<double>>& splits, double distance) {
+    std::map<std::tuple<int, int, int>, std::vector<double>> at;  // (face, loop, coedge) -> cuts
+    for (std::size_t i = 0; i < traces.size(); ++i) {
+        std::vector<double> cuts;
+        Eigen::Vector3d last = traces[i].points.front();
+        for (double t : splits[i]) {
+            const Eigen::Vector3d p = trace_at(model, traces[i], t);
+            if ((p - last).norm() > 2.0 * distance && (p - traces[i].points.back()).norm() > 2.0 * distance) {
+                cuts.push_back(t);
+                last = p;
+            }
+        }
+        if (!cuts.empty()) at[{traces[i].face, traces[i].loop, traces[i].coedge}] = cuts;
+    }
+    int pieces = 0;
+    for (auto it = at.rbegin(); it != at.rend(); ++it) {  // later coedges first: indices stay valid
+        const auto [f, l, c] = it->first;
+        std::vector<geom::Coedge>& coedges = model.faces[f].loops[l].coedges;
+        const geom::Coedge whole = coedges[c];
+        const auto [t0, t1] = whole.curve.domain();
+        std::vector<double> ends{t0};
+        ends.insert(ends.end(), it->second.begin(), it->second.end());
+        ends.push_back(t1);
+        std::vector<geom::Coedge> parts;
+        for (std::size_t k = 0; k + 1 < ends.size(); ++k)
+            parts.push_back(geom::Coedge{whole.curve.sub_curve(ends[k], ends[k + 1]), -1, false});
+        coedges.erase(coedges.begin() + c);
+        coedges.insert(coedges.begin() + c, parts.begin(), parts.end());
+        pieces += static_cast<int>(parts.size()) - 1;
+    }
+    return pieces;
+}
+
 }  // namespace
 
 SewingReport sew_free_coedges(geom::Model& model, double distance) {
     SewingReport report;
     if (!(distance > 0.0) || !std::isfinite(distance)) return report;
+    {
+        const std::vector<Trace> whole = free_traces(model, distance);
+        if (whole.empty()) return report;
+        report.splits = apply_splits(model, whole, split_parameters(model, whole, distance), distance);
+    }
     const std::vector<Trace> traces = free_traces(model, distance);
     std::vector<Candidate> found = candidates(model, traces, distance);
     std::stable_sort(found.begin(), found.end(),

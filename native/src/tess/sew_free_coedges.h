@@ -4,7 +4,9 @@
 // the same polyline (share_edge_points.h): the faces meet by construction instead of
 // by a weld of two polylines that each stray within their own tolerance of the curve
 // (issue 10: "welded by construction"). Only whole coedges are paired, each at most
-// once; a curve split differently on its two faces is left to the join.
+// once. First, a coedge on whose interior another free trace ends (within the
+// distance) is split there: a curve split differently on its two faces (a T-vertex,
+// or closed curves that start at different points) becomes whole pieces that pair.
 #pragma once
 
 #include "geom/model.h"
@@ -13,6 +15,7 @@ namespace trimkit::tess {
 
 struct SewingReport {
     int pairs = 0;        // coedge pairs that became a shared edge
+    int splits = 0;       // coedges split where another trace ends on them
     double max_gap = 0.0; // largest distance between the paired traces (3D)
 };
 

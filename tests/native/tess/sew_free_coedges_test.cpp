@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -159,6 +160,99 @@ TEST(SewFreeCoedges, SewnFacesApartMeetMidway) {
     }
     EXPECT_GE(midway, 3);
     EXPECT_EQ(on_first, 0);
+}
+
+// The plane z = 0 over [x0, x1] x [y0, y1] (S(u, v) = (u, v, 0)).
+geom::NurbsSurface plane(double x0, double x1, double y0, double y1) {
+    return geom::NurbsSurface(1, 1, {x0, x0, x1, x1}, {y0, y0, y1, y1}, 2, 2,
+                              {{x0, y0, 0}, {x0, y1, 0}, {x1, y0, 0}, {x1, y1, 0}});
+}
+
+// A T-vertex the file left unsplit: face 0 spans [0, 2] x [0, 1]; faces 1 and 2 sit
+// on its top side, [0, 1] x [1, 2] and [1, 2] x [1, 2]. Face 0's top side is one
+// coedge, which faces 1 and 2 meet in two.
+TEST(SewFreeCoedges, SplitsACurveWhereAnotherFacesTraceEndsOnIt) {
+    geom::Model model;
+    for (const auto& [x0, x1, y0, y1] : {std::array<double, 4>{0, 2, 0, 1}, {0, 1, 1, 2}, {1, 2, 1, 2}}) {
+        geom::Face face;
+        face.surface = plane(x0, x1, y0, y1);
+        face.loops.push_back(geom::natural_boundary_loop(face.surface));
+        model.faces.push_back(face);
+    }
+    const SewingReport report = sew_free_coedges(model, 1e-3);
+    EXPECT_EQ(report.splits, 1);
+    EXPECT_EQ(model.faces[0].loops[0].coedges.size(), 5u);
+    // Face 0's two top pieces with faces 1 and 2, and the side x = 1 between 1 and 2.
+    EXPECT_EQ(report.pairs, 3);
+    const TessellationResult r = tessellate_model(model, options_at(1e-3));
+    EXPECT_EQ(r.faces_meshed, 3);
+    // Open: only the outline of the L-shaped union, 2 + 2 + 2 + 1 + 1 + 1 + 1 sides long at least.
+    std::map<std::pair<std::tuple<double, double, double>, std::tuple<double, double, double>>, int> uses;
+    for (const auto& t : r.mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const Eigen::Vector3d& p = r.mesh.positions[t[k]];
+            const Eigen::Vector3d& q = r.mesh.positions[t[(k + 1) % 3]];
+            auto a = std::make_tuple(p.x(), p.y(), p.z()), b = std::make_tuple(q.x(), q.y(), q.z());
+            ++uses[{std::min(a, b), std::max(a, b)}];
+        }
+    for (const auto& [side, count] : uses) {
+        if (count != 1) continue;
+        const double y0 = std::get<1>(side.first), y1 = std::get<1>(side.second);
+        const double x0 = std::get<0>(side.first), x1 = std::get<0>(side.second);
+        const bool inner = (y0 == 1.0 && y1 == 1.0) || (x0 == 1.0 && x1 == 1.0 && y0 > 1.0 && y1 > 1.0);
+        EXPECT_FALSE(inner) << "open side (" << x0 << ", " << y0 << ") - (" << x1 << ", " << y1 << ")";
+    }
+}
+
+// The unit circle as a rational quadratic NURBS in (u, v) starting at angle `start`,
+// counter-clockwise or clockwise.
+geom::NurbsCurve2d unit_circle(double start, bool counter_clockwise) {
+    std::vector<Eigen::Vector2d> points;
+    std::vector<double> weights;
+    for (int k = 0; k <= 8; ++k) {
+        const double angle = start + (counter_clockwise ? 1.0 : -1.0) * k * M_PI / 4.0;
+        const double r = k % 2 == 0 ? 1.0 : std::sqrt(2.0);
+        points.emplace_back(r * std::cos(angle), r * std::sin(angle));
+        weights.push_back(k % 2 == 0 ? 1.0 : std::sqrt(0.5));
+    }
+    return geom::NurbsCurve2d(2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}, points, weights);
+}
+
+// A hole and the disk that fills it, each bounded by one closed curve, the hole's
+// starting at angle 0 and the disk's at 90 degrees: each is split at the other's
+// start, and the two arcs pair.
+TEST(SewFreeCoedges, ClosedCurvesStartingApartAreSplitAndPaired) {
+    geom::Model model;
+    geom::Face square;
+    square.surface = plane(-2, 2, -2, 2);
+    square.loops.push_back(geom::natural_boundary_loop(square.surface));
+    square.loops.push_back(geom::Loop{{geom::Coedge{unit_circle(0.0, false), -1, false}}, false});
+    geom::Face disk;
+    disk.surface = plane(-1, 1, -1, 1);
+    disk.loops.push_back(geom::Loop{{geom::Coedge{unit_circle(M_PI / 2.0, true), -1, false}}, true});
+    model.faces = {square, disk};
+    const SewingReport report = sew_free_coedges(model, 1e-3);
+    EXPECT_EQ(report.splits, 2);
+    EXPECT_EQ(report.pairs, 2);
+    EXPECT_LT(report.max_gap, 1e-9);
+    const TessellationResult r = tessellate_model(model, options_at(1e-3));
+    EXPECT_EQ(r.faces_meshed, 2);
+    // Open: the square's outline only, none on the circle.
+    int open_on_circle = 0;
+    std::map<std::pair<std::tuple<double, double, double>, std::tuple<double, double, double>>, int> uses;
+    for (const auto& t : r.mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const Eigen::Vector3d& p = r.mesh.positions[t[k]];
+            const Eigen::Vector3d& q = r.mesh.positions[t[(k + 1) % 3]];
+            auto a = std::make_tuple(p.x(), p.y(), p.z()), b = std::make_tuple(q.x(), q.y(), q.z());
+            ++uses[{std::min(a, b), std::max(a, b)}];
+        }
+    for (const auto& [side, count] : uses) {
+        const double ra = std::hypot(std::get<0>(side.first), std::get<1>(side.first));
+        const double rb = std::hypot(std::get<0>(side.second), std::get<1>(side.second));
+        open_on_circle += count == 1 && std::abs(ra - 1.0) < 1e-9 && std::abs(rb - 1.0) < 1e-9;
+    }
+    EXPECT_EQ(open_on_circle, 0);
 }
 
 }  // namespace
