@@ -124,6 +124,9 @@ long yang_steps(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, double
 // t0's point is expected to be present already.
 void append_points(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, double t0, double t1,
                    const std::vector<double>& s_values, TrimPolyline* out, mesh::Deadline* deadline) {
+    if (out->points.size() + s_values.size() > kMaxTrimPoints)
+        throw geom::NumericalFailure("trim curve approximation needs more than " + std::to_string(kMaxTrimPoints) +
+                                     " points (the curve is too long on its surface for the tolerance)");
     for (double s : s_values) {
         mesh::check_deadline(deadline, "trim curve approximation");
         PolylinePoint p;

@@ -4,6 +4,8 @@
 // carries t, uv = c(t) and xyz = S(uv). Tolerances are in model units.
 #pragma once
 
+#include <cstddef>
+
 #include "geom/nurbs_curve.h"
 #include "geom/nurbs_surface.h"
 #include "mesh/deadline.h"
@@ -21,6 +23,10 @@ constexpr int kMaxSubdivisionDepth = 40;
 // kYang, kParam: cap on the segments per piece, so absurd bounds (huge weight
 // ratios) cannot exhaust memory; 2^20 segments of one piece is far beyond need.
 constexpr long kMaxStepsPerPiece = 1L << 20;
+// Cap on the points of one trim polyline (all pieces): a curve whose (u,v) extent is
+// absurd for its surface (a fuzzed plane 7e11 wide) would otherwise take hundreds of
+// MB before the face's time limit; the face fails instead, with the figures.
+constexpr std::size_t kMaxTrimPoints = std::size_t(1) << 19;
 
 // The polyline for c on S, to `tolerance` (> 0) by `method`:
 //  kBezier3d [Balazs] Sec. 4, 5.1: on each lifted piece (lift_trim_curve) midpoint

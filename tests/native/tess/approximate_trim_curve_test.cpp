@@ -111,5 +111,21 @@ TEST(ApproximateTrimCurve, RejectsBadTolerance) {
                      geom::InvalidInput);
 }
 
+// A curve far too long on its surface for the tolerance (the sphere circle scaled by
+// 1e9, at the unscaled tolerance: 1e9 times the points) fails with the cap instead of
+// taking memory without bound (a fuzzed IGES plane 7e11 wide took 385 MB).
+TEST(ApproximateTrimCurve, PointsAreCappedWhereTheCurveIsTooLongForTheTolerance) {
+    const TrimCase tc = test::sphere_circle();
+    const geom::NurbsSurface S = tc.surface.transformed(Eigen::Affine3d(Eigen::Scaling(1e9)));
+    for (TrimMethod method : {TrimMethod::kBezier3d, TrimMethod::kYang}) {
+        try {
+            const TrimPolyline p = approximate_trim_curve(S, tc.curve, 1e-3, method);
+            ADD_FAILURE() << p.points.size() << " points";
+        } catch (const geom::NumericalFailure& e) {
+            EXPECT_NE(std::string(e.what()).find(std::to_string(kMaxTrimPoints)), std::string::npos) << e.what();
+        }
+    }
+}
+
 }  // namespace
 }  // namespace trimkit::tess
