@@ -18,6 +18,12 @@ namespace {
 // Points per trace for the pairing test, and for telling the direction of closed
 // traces (whose ends coincide) apart.
 constexpr int kTraceIntervals = 16;
+// The pairing test's points per trace: kTraceIntervals, or kPointsPerSpan per span of
+// the coedge's curve when it has more (a p-curve approximated span by span strays
+// between its knots: equal_tee_faces had traces 2 T apart that agreed at 17 points),
+// up to kMaxTraceIntervals.
+constexpr int kPointsPerSpan = 4;
+constexpr int kMaxTraceIntervals = 1024;
 constexpr int kDirectionSamples = 64;
 // A trace end with more ends than this around it (stacked copies of one face, a
 // fan of coincident curves) is not sewn: which pairs belong together is not clear
@@ -28,7 +34,7 @@ constexpr std::size_t kMaxCandidates = 4;
 
 struct Trace {
     int face = 0, loop = 0, coedge = 0;
-    std::vector<Eigen::Vector3d> points;  // S(c(t)) at kTraceIntervals + 1 uniform t
+    std::vector<Eigen::Vector3d> points;  // S(c(t)) at uniform t, trace_intervals + 1 of them
     double length = 0.0;
 };
 
@@ -50,6 +56,13 @@ std::vector<Eigen::Vector3d> trace_points(const geom::Face& face, const geom::Co
     return points;
 }
 
+int trace_intervals(const geom::NurbsCurve2d& c) {
+    const std::vector<double>& U = c.knots();
+    int spans = 0;
+    for (std::size_t k = 1; k < U.size(); ++k) spans += U[k] > U[k - 1];
+    return std::clamp(kPointsPerSpan * spans, kTraceIntervals, kMaxTraceIntervals);
+}
+
 std::vector<Trace> free_traces(const geom::Model& model, double distance) {
     std::vector<Trace> traces;
     for (size_t f = 0; f < model.faces.size(); ++f)
@@ -57,9 +70,10 @@ std::vector<Trace> free_traces(const geom::Model& model, double distance) {
             for (size_t c = 0; c < model.faces[f].loops[l].coedges.size(); ++c) {
                 const geom::Coedge& coedge = model.faces[f].loops[l].coedges[c];
                 if (coedge.edge >= 0) continue;
+                const int intervals = trace_intervals(coedge.curve);
                 Trace trace{static_cast<int>(f), static_cast<int>(l), static_cast<int>(c),
-                            trace_points(model.faces[f], coedge, kTraceIntervals), 0.0};
-                for (int k = 0; k < kTraceIntervals; ++k)
+                            trace_points(model.faces[f], coedge, intervals), 0.0};
+                for (int k = 0; k < intervals; ++k)
                     trace.length += (trace.points[k + 1] - trace.points[k]).norm();
                 if (trace.length > 2.0 * distance && std::isfinite(trace.length)) traces.push_back(std::move(trace));
             }
@@ -118,7 +132,8 @@ bool runs_along(const geom::Model& model, const Trace& a, const Trace& b) {
             if ((dense[k] - x).squaredNorm() < (dense[best] - x).squaredNorm()) best = k;
         return best;
     };
-    return nearest(a.points[kTraceIntervals / 3]) < nearest(a.points[(2 * kTraceIntervals) / 3]);
+    const std::size_t n = a.points.size() - 1;
+    return nearest(a.points[n / 3]) < nearest(a.points[(2 * n) / 3]);
 }
 
 // Largest distance of `points` (in the direction of the coedge when `along`) from

@@ -56,6 +56,9 @@ constexpr double kSliverWidthShare = 0.01;
 // tolerance from its 3D curve is approximated on its second face instead when that
 // one follows the curve at least twice as closely (pcurve_edge_gap.h).
 constexpr double kEdgeGapShare = 0.1;
+// A sewn edge (sew_free_coedges.h, within 2 kWeldShare T at its test points) whose
+// faces lie farther apart than this share of T along its polyline is unsewn.
+constexpr double kSewnGapLimit = 0.3;
 // Holes of the joined mesh at most this many sides long and narrower than the trims'
 // own tolerance (below what the trim polylines can tell apart; what repair_trim_loop
 // drops and the crossings it leaves) are filled (fill_sliver_holes).
@@ -396,6 +399,13 @@ void meet_midway(const geom::Model& model, const std::vector<int>& shared, const
             const SharedEdgePolyline mapped = share_edge_points(
                 face.surface, face.loops[second[e].loop].coedges[second[e].coedge], edge_points[e]);
             if (mapped.max_gap <= least_gap) return;
+            if (mapped.max_gap > kSewnGapLimit * options.tolerance) {
+                // Sewn on the pairing test's points, farther apart between them: each
+                // face approximates its own trim again, and the join meets them.
+                edge_polyline[e].reset();
+                edge_points[e].clear();
+                return;
+            }
             move_edge_points_midway(edge_points[e], mapped.feet);
             std::vector<PolylinePoint>& points = edge_polyline[e]->points;
             const size_t n = points.size();
