@@ -19,6 +19,9 @@ namespace {
 // and coarse, so an input costs milliseconds and a slow one points at a real hang.
 constexpr int kMeshedFaces = 3;
 constexpr double kRelativeTolerance = 0.02;
+// Wall time per face, seconds: a face that needs more is reported as a timeout (the
+// product's limit, tested here at a size the sanitizers' 10-100x slowdown allows).
+constexpr double kFaceTimeout = 5.0;
 
 }  // namespace
 
@@ -36,6 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         tess::TessellationOptions options;
         options.tolerance = kRelativeTolerance * diagonal;
         options.threads = 1;
+        options.face_timeout = kFaceTimeout;
         tess::tessellate_model(part, options);
     });
     return 0;
