@@ -148,7 +148,7 @@ def link_file(context, prepared, settings, progress=None):
     path, model, data, result, scale = prepared.path, prepared.model, prepared.data, prepared.result, prepared.scale
     placements = io.placements(model, scale)
     line, warnings = size_report(path, model, settings.units, result.parts, context.scene)
-    text = stored_source.store(path.name, data, path.resolve())
+    text = stored_source.store(path.name, data, path.resolve(), model)
     collection = new_collection(context.collection, path.stem) if placements else context.collection
     assemblies = {(): collection}
     objects = []
@@ -427,7 +427,7 @@ def reload(text):
         if kind != "MODEL" and index >= count:
             raise ValueError(f"{path}: {obj.name} shows {kind.lower()} {index}, which the file no longer has "
                              f"({count} {kind.lower()}s)")
-    stored_source.replace(text, data)
+    stored_source.replace(text, data, model)
     for obj in objects:
         obj.trimkit.uv_layout = ""  # the faces may have changed: lay the UVs out again
     retessellate(objects)

@@ -106,6 +106,12 @@ def read_bytes(data, name, limits=None):
         raise limits_module.cancelled_error(err, limits, name) or err from None
 
 
+def lossless_tkz(model):
+    """The model as .tkz bytes with every surface kept: it reads back as the same model
+    (read_bytes), so what is meshed from it is what the source gives."""
+    return bytes(native().model_tkz_bytes(model))
+
+
 def compress_to_tkz(model, tolerance=0.0):
     """(.tkz bytes, faces compressed, faces) of a model, as `trimkit compress` (Muraki):
     each face refitted from its edges with G1; tolerance in model units, 0 for 1 % of

@@ -25,6 +25,11 @@ std::pair<fit::CompressedModel, std::vector<fit::FaceCompression>> compress(cons
 
 py::bytes tkz_bytes(const fit::CompressedModel& c) { return py::bytes(io::tkz_bytes(c)); }
 
+// The model as a .tkz with every surface kept: lossless, it re-meshes as the source.
+py::bytes model_tkz_bytes(const geom::Model& m) {
+    return py::bytes(io::tkz_bytes({m, std::vector<std::optional<fit::FitRule>>(m.faces.size())}));
+}
+
 fit::CompressedModel read_tkz_bytes(const py::bytes& data, const std::string& name) {
     std::string bytes = data;
     py::gil_scoped_release release;
@@ -62,6 +67,8 @@ void bind_fit(py::module_& m) {
     m.def("extend_model", &fit::extend_model, py::arg("compressed"), py::call_guard<py::gil_scoped_release>(),
           "Rebuild the compressed faces' surfaces; returns a Model.");
     m.def("tkz_bytes", &tkz_bytes, py::arg("compressed"), "The .tkz file of a CompressedModel, as bytes.");
+    m.def("model_tkz_bytes", &model_tkz_bytes, py::arg("model"),
+          "The model as .tkz bytes with every surface kept (lossless: it reads back as the same model).");
     m.def("read_tkz_bytes", &read_tkz_bytes, py::arg("data"), py::arg("name"),
           "Read .tkz bytes; raises RuntimeError 'NAME: reason' for a bad file.");
     m.def("write_iges", &io::write_iges, py::arg("model"), py::arg("path"), py::call_guard<py::gil_scoped_release>(),

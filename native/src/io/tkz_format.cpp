@@ -14,7 +14,9 @@ namespace trimkit::io {
 namespace {
 
 constexpr char kMagic[4] = {'T', 'K', 'Z', '1'};
-constexpr std::uint32_t kVersion = 1;
+// Version 2 adds the notes section (warnings, source entities, assembly paths);
+// version 1 files, which end after the colours, still read.
+constexpr std::uint32_t kVersion = 2;
 
 // ---- writing ----------------------------------------------------------------------
 
@@ -226,6 +228,23 @@ std::vector<int> face_list(Reader& r, const char* what, std::size_t faces) {
     return out;
 }
 
+void write_strings(Writer& w, const std::vector<std::string>& strings) {
+    w.u32(static_cast<std::uint32_t>(strings.size()));
+    for (const std::string& x : strings) w.str(x);
+}
+
+// What the reader noted, so that a model stored as .tkz (the Blender add-on) reports
+// the same after a reload: the model's warnings, each face's source entity and
+// warnings, each instance's assembly path.
+void write_notes(Writer& w, const geom::Model& m) {
+    write_strings(w, m.warnings);
+    for (const geom::Face& f : m.faces) {
+        w.i32(f.source_entity);
+        write_strings(w, f.warnings);
+    }
+    for (const geom::Instance& i : m.instances) write_strings(w, i.path);
+}
+
 }  // namespace
 
 std::string tkz_bytes(const fit::CompressedModel& cm) {
@@ -265,6 +284,7 @@ std::string tkz_bytes(const fit::CompressedModel& cm) {
         for (double x : c.rgb) w.f64(x);
         w.str(c.name);
     }
+    write_notes(w, m);
     return w.out;
 }
 
@@ -318,6 +338,22 @@ void read_structure(Reader& r, geom::Model& m) {
         if (f.color < -1 || f.color >= static_cast<int>(colors)) r.fail("face colour " + std::to_string(f.color) + " out of range");
 }
 
+std::vector<std::string> read_strings(Reader& r, const char* what) {
+    std::vector<std::string> out(r.count(what, 4));
+    for (std::string& x : out) x = r.str(what);
+    return out;
+}
+
+// The notes section of version 2 (write_notes).
+void read_notes(Reader& r, geom::Model& m) {
+    m.warnings = read_strings(r, "model warning");
+    for (geom::Face& f : m.faces) {
+        f.source_entity = r.c.i32("face source entity");
+        f.warnings = read_strings(r, "face warning");
+    }
+    for (geom::Instance& i : m.instances) i.path = read_strings(r, "instance path");
+}
+
 fit::CompressedModel read_tkz_bytes(const std::string& bytes, const std::string& name) {
     ByteCursor cursor(bytes, 0, bytes.size(), name);
     Reader r{cursor, name};
@@ -325,7 +361,8 @@ fit::CompressedModel read_tkz_bytes(const std::string& bytes, const std::string&
     for (char& ch : magic) ch = static_cast<char>(cursor.u8("magic"));
     if (std::memcmp(magic, kMagic, 4) != 0) r.fail("not a .tkz file (no TKZ1 magic)");
     const std::uint32_t version = cursor.u32("version");
-    if (version != kVersion) r.fail("version " + std::to_string(version) + "; this trimkit reads version 1");
+    if (version < 1 || version > kVersion)
+        r.fail("version " + std::to_string(version) + "; this trimkit reads versions 1 and 2");
     fit::CompressedModel cm;
     geom::Model& m = cm.model;
     m.units = r.str("units");
@@ -337,6 +374,7 @@ fit::CompressedModel read_tkz_bytes(const std::string& bytes, const std::string&
         read_face(r, m, cm.rules.back(), m.edges.size());
     }
     read_structure(r, m);
+    if (version >= 2) read_notes(r, m);
     if (cursor.remaining() != 0) r.fail(std::to_string(cursor.remaining()) + " bytes after the end of the model");
     return cm;
 }

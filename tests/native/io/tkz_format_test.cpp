@@ -121,6 +121,42 @@ void expect_read_error(const std::string& bytes, const std::string& needle) {
     }
 }
 
+TEST(Tkz, NotesKeepWarningsSourceEntitiesAndAssemblyPaths) {
+    geom::Model m = fit::test::plate_with_holes();
+    m.warnings = {"entity 140 at D123 unsupported"};
+    m.faces[0].source_entity = 17;
+    m.faces[0].warnings = {"trim curve 1 projected from model space", "loop repaired"};
+    m.bodies.push_back({"plate", {0}, false});
+    m.free_faces.clear();
+    geom::Instance placed;
+    placed.body = 0;
+    placed.name = "plate:1";
+    placed.path = {"assembly", "sub-assembly"};
+    m.instances.push_back(placed);
+    const fit::CompressedModel all_kept{m, std::vector<std::optional<fit::FitRule>>(m.faces.size())};
+    const geom::Model back = read_tkz_bytes(tkz_bytes(all_kept), "notes.tkz").model;
+    EXPECT_EQ(back.warnings, m.warnings);
+    EXPECT_EQ(back.faces[0].source_entity, 17);
+    EXPECT_EQ(back.faces[0].warnings, m.faces[0].warnings);
+    ASSERT_EQ(back.instances.size(), 1u);
+    EXPECT_EQ(back.instances[0].path, placed.path);
+    EXPECT_TRUE(same_surface(back.faces[0].surface, m.faces[0].surface));
+}
+
+TEST(Tkz, VersionOneFilesWithoutNotesStillRead) {
+    // A model without warnings, faces or instances: its notes are one count (4 bytes).
+    geom::Model m;
+    m.colors.push_back({{0.1, 0.2, 0.3}, "red"});
+    std::string bytes = tkz_bytes({m, {}});
+    bytes.resize(bytes.size() - 4);
+    bytes[4] = 1;  // the version, little-endian
+    const geom::Model back = read_tkz_bytes(bytes, "v1.tkz").model;
+    ASSERT_EQ(back.colors.size(), 1u);
+    EXPECT_EQ(back.colors[0].name, "red");
+    bytes[4] = 3;
+    expect_read_error(bytes, "versions 1 and 2");
+}
+
 TEST(Tkz, HostileInputGivesAClearError) {
     std::vector<fit::FaceCompression> report;
     const std::string good = tkz_bytes(fit::compress_model(fit::test::plate_with_holes(), {}, &report));
