@@ -5,6 +5,7 @@
 
 #include "fit/compress_model.h"
 #include "fit/extend_model.h"
+#include "fit/g1_angle.h"
 #include "fit/model_deviation.h"
 #include "io/tkz_format.h"
 #include "io/write_iges.h"
@@ -24,6 +25,28 @@ std::pair<fit::CompressedModel, std::vector<fit::FaceCompression>> compress(cons
 }
 
 py::bytes tkz_bytes(const fit::CompressedModel& c) { return py::bytes(io::tkz_bytes(c)); }
+
+// The G1 check's samples of a compressed face against its rebuilt surface (in
+// `extended`): (points, normals, neighbour normals) as (n, 3) arrays and the angles in
+// degrees; empty when the face is kept or has no G1 coedge.
+py::tuple g1_normals(const fit::CompressedModel& c, const geom::Model& extended, int face) {
+    if (face < 0 || face >= static_cast<int>(c.model.faces.size()) || face >= static_cast<int>(extended.faces.size()))
+        throw py::index_error("face " + std::to_string(face) + " out of range");
+    std::vector<fit::G1Sample> samples;
+    if (face < static_cast<int>(c.rules.size()) && c.rules[face]) {
+        py::gil_scoped_release release;
+        samples = fit::g1_samples(c.model, fit::edge_faces(c.model), face, *c.rules[face], extended.faces[face].surface);
+    }
+    std::vector<Eigen::Vector3d> points, normals, neighbour;
+    std::vector<double> angles;
+    for (const fit::G1Sample& s : samples) {
+        points.push_back(s.point);
+        normals.push_back(s.normal);
+        neighbour.push_back(s.neighbour_normal);
+        angles.push_back(s.angle);
+    }
+    return py::make_tuple(to_numpy<3>(points), to_numpy<3>(normals), to_numpy<3>(neighbour), angles);
+}
 
 // The model as a .tkz with every surface kept: lossless, it re-meshes as the source.
 py::bytes model_tkz_bytes(const geom::Model& m) {
@@ -67,6 +90,9 @@ void bind_fit(py::module_& m) {
     m.def("extend_model", &fit::extend_model, py::arg("compressed"), py::call_guard<py::gil_scoped_release>(),
           "Rebuild the compressed faces' surfaces; returns a Model.");
     m.def("tkz_bytes", &tkz_bytes, py::arg("compressed"), "The .tkz file of a CompressedModel, as bytes.");
+    m.def("g1_normals", &g1_normals, py::arg("compressed"), py::arg("extended"), py::arg("face"),
+          "(points, normals, neighbour normals, angles in degrees) along a compressed face's G1 edges: "
+          "the check compress_model makes ([Muraki] Fig. 15).");
     m.def("model_tkz_bytes", &model_tkz_bytes, py::arg("model"),
           "The model as .tkz bytes with every surface kept (lossless: it reads back as the same model).");
     m.def("read_tkz_bytes", &read_tkz_bytes, py::arg("data"), py::arg("name"),

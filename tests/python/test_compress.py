@@ -93,3 +93,30 @@ def test_lossless_tkz_stores_the_model_smaller_and_meshes_the_same(name):
     assert np.array_equal(np.asarray(a.positions), np.asarray(b.positions))
     if not name.endswith(".igs"):  # a 4-face IGES part is smaller as text
         assert len(zlib.compress(data, 9)) < 0.6 * len(zlib.compress(path.read_bytes(), 9))
+
+
+def test_g1_normals_are_the_samples_of_the_reported_g1_angle():
+    """_trimkit.g1_normals (bench/g1_normals.py, [Muraki] Fig. 15) gives the check's own
+    samples: 50 per G1 edge, unit normals, and their largest angle is the report's g1_angle."""
+    import numpy as np
+    path = CAD / "brep" / "bottle.brep"
+    if not path.exists():
+        pytest.skip(f"{path} not found (../shared/data/cad)")
+    compressed, report = _trimkit.compress_model(_trimkit.read_model(str(path)))
+    extended = _trimkit.extend_model(compressed)
+    checked = 0
+    for f, r in enumerate(report):
+        points, normals, neighbours, angles = _trimkit.g1_normals(compressed, extended, f)
+        if not (r.compressed and r.g1_edges):
+            assert len(angles) == 0
+            continue
+        assert len(angles) == 50 * r.g1_edges
+        assert np.allclose(np.linalg.norm(np.asarray(normals), axis=1), 1.0)
+        assert np.allclose(np.linalg.norm(np.asarray(neighbours), axis=1), 1.0)
+        cosines = np.abs(np.sum(np.asarray(normals) * np.asarray(neighbours), axis=1))
+        assert np.allclose(np.degrees(np.arccos(np.minimum(1.0, cosines))), angles, atol=1e-9)
+        assert max(angles) == pytest.approx(r.g1_angle, abs=1e-12) and max(angles) <= 0.5
+        checked += 1
+    assert checked >= 20
+    with pytest.raises(IndexError):
+        _trimkit.g1_normals(compressed, extended, len(report))
