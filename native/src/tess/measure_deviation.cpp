@@ -2,17 +2,14 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <thread>
 
 #include "geom/error.h"
 #include "geom/surface_projector.h"
 #include "mesh/open_edges.h"
+#include "mesh/parallel_for.h"
 #include "mesh/weld_vertices.h"
 #include "tess/foot_point.h"
 #include "tess/surface_evaluator.h"
@@ -37,31 +34,6 @@ constexpr double kBoundaryZone = 1e-6;
 // Isolines and points per isoline used to estimate a face's 3D extent in u and v.
 constexpr int kExtentLines = 5, kExtentPoints = 17;
 
-// Runs work(i) for i in [0, n) on `threads` threads (dynamic scheduling); the
-// first exception thrown by any item is rethrown after all threads stop.
-template <class Work>
-void parallel_for(int n, int threads, const Work& work) {
-    std::atomic<int> next{0};
-    std::exception_ptr error;
-    std::mutex error_mutex;
-    const auto run = [&] {
-        for (int i = next++; i < n; i = next++) {
-            try {
-                work(i);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(error_mutex);
-                if (!error) error = std::current_exception();
-                next = n;
-            }
-        }
-    };
-    const int count = std::max(1, std::min(threads, n));
-    std::vector<std::thread> pool;
-    for (int t = 1; t < count; ++t) pool.emplace_back(run);
-    run();
-    for (auto& t : pool) t.join();
-    if (error) std::rethrow_exception(error);
-}
 
 // Running max / sum / count of one direction over a part of the work.
 struct Accumulator {
@@ -145,8 +117,7 @@ void validate(const geom::Model& model, const mesh::Mesh& mesh, const DeviationO
 DeviationReport measure_deviation(const geom::Model& model, const mesh::Mesh& mesh,
                                   const DeviationOptions& options) {
     validate(model, mesh, options);
-    const int threads = options.threads > 0 ? options.threads
-                                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const int threads = mesh::resolve_threads(options.threads);
     const int nf = static_cast<int>(model.faces.size());
     const int nt = static_cast<int>(mesh.triangles.size());
     const int n = options.samples;
@@ -161,7 +132,7 @@ DeviationReport measure_deviation(const geom::Model& model, const mesh::Mesh& me
     std::vector<std::unique_ptr<TrimRegion>> regions(nf);
     std::vector<std::unique_ptr<geom::SurfaceProjector>> projectors(nf);
     std::vector<std::string> face_warning(nf);
-    parallel_for(nf, threads, [&](int f) {
+    mesh::parallel_for(nf, threads, [&](int f) {
         const geom::Face& face = model.faces[f];
         try {
             regions[f] = std::make_unique<TrimRegion>(face, options.trim);
@@ -205,7 +176,7 @@ DeviationReport measure_deviation(const geom::Model& model, const mesh::Mesh& me
     // ---- Surface -> mesh ----
     const TriangleBvh bvh(mesh);
     std::vector<Accumulator> s2m(nf);
-    parallel_for(nf, threads, [&](int f) {
+    mesh::parallel_for(nf, threads, [&](int f) {
         if (!regions[f]) return;
         const TrimRegion& region = *regions[f];
         const geom::NurbsSurface& s = model.faces[f].surface;
@@ -315,7 +286,7 @@ DeviationReport measure_deviation(const geom::Model& model, const mesh::Mesh& me
         const double zu = kBoundaryZone * (u1 - u0), zv = kBoundaryZone * (v1 - v0);
         return uv.x() - u0 < zu || u1 - uv.x() < zu || uv.y() - v0 < zv || v1 - uv.y() < zv;
     };
-    parallel_for(chunks, threads, [&](int chunk) {
+    mesh::parallel_for(chunks, threads, [&](int chunk) {
         Accumulator acc;
         double uv_max = 0.0;
         std::vector<std::pair<int, double>> face_max;

@@ -7,12 +7,12 @@
 #include <mutex>
 #include <numeric>
 #include <optional>
-#include <thread>
 #include <tuple>
 
 #include "geom/error.h"
 #include "geom/flatten_instances.h"
 #include "mesh/deadline.h"
+#include "mesh/parallel_for.h"
 #include "mesh/open_edges.h"
 #include "mesh/weld_vertices.h"
 #include "tess/approximate_trim_curve.h"
@@ -79,19 +79,6 @@ constexpr int kDiagonalCurveSamples = 16, kDiagonalGridSamples = 12;
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-template <class F>
-void parallel_for(int count, int threads, F&& body) {
-    std::atomic<int> next{0};
-    auto worker = [&] {
-        for (int i = next++; i < count; i = next++) body(i);
-    };
-    const int helpers = std::min(threads, count) - 1;
-    std::vector<std::thread> pool;
-    for (int t = 0; t < helpers; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& thread : pool) thread.join();
 }
 
 double uv_diagonal(const geom::NurbsSurface& S) {
@@ -391,7 +378,7 @@ void meet_midway(const geom::Model& model, const std::vector<int>& shared, const
                  int threads, std::vector<std::string>& warnings) {
     const double least_gap = kEdgeGapShare * options.tolerance;
     std::vector<double> moved_gap(model.edges.size(), 0.0);
-    parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
+    mesh::parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
         const int e = shared[k];
         if (model.edges[e].curve || second[e].face < 0 || !edge_polyline[e] || edge_points[e].size() < 2) return;
         const geom::Face& face = model.faces[second[e].face];
@@ -540,9 +527,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     result.faces = static_cast<int>(model.faces.size());
     areas->assign(model.faces.size(), FaceArea{});
     result.tolerance = options.tolerance;
-    const int threads = options.threads > 0
-                            ? options.threads
-                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const int threads = mesh::resolve_threads(options.threads);
     const std::vector<double>& trim_scale = scales.trim;
     const double least_scale =
         trim_scale.empty() ? 1.0 : *std::min_element(trim_scale.begin(), trim_scale.end());
@@ -566,7 +551,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
                 }
             }
     // The face whose p-curve follows the edge's 3D curve gives the edge its points.
-    parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
+    mesh::parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
         const int e = shared[k];
         if (second[e].face < 0 || !model.edges[e].curve) return;
         const auto gap = [&](const CoedgeRef& r) {
@@ -579,7 +564,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     });
     std::vector<std::optional<TrimPolyline>> edge_polyline(model.edges.size());
     std::vector<std::vector<Eigen::Vector3d>> edge_points(model.edges.size());
-    parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
+    mesh::parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
         const int e = shared[k];
         const geom::Face& face = model.faces[first[e].face];
         const geom::Coedge& coedge = face.loops[first[e].loop].coedges[first[e].coedge];
@@ -638,7 +623,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     std::vector<FaceOutput> outputs(model.faces.size());
     FaceProgress progress(has_previous ? std::function<void(double)>() : options.progress,
                           static_cast<int>(model.faces.size()));
-    parallel_for(static_cast<int>(model.faces.size()), threads, [&](int f) {
+    mesh::parallel_for(static_cast<int>(model.faces.size()), threads, [&](int f) {
         const FaceProgress::Done done(progress);
         FaceOutput& out = outputs[f];
         if (cancelled(options)) {
