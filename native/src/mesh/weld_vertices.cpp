@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "geom/error.h"
+#include "mesh/grid_cell.h"
 
 namespace trimkit::mesh {
 namespace {
@@ -18,21 +19,6 @@ namespace {
 constexpr double kMinRelativeCellSize = 1e-12;
 
 constexpr double kPi = 3.14159265358979323846;
-
-struct CellKey {
-    std::int64_t x, y, z;
-    bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
-};
-
-struct CellKeyHash {
-    std::size_t operator()(const CellKey& k) const {
-        // Large odd multipliers spread neighbouring cells (Teschner et al. 2003 style).
-        const auto h = static_cast<std::uint64_t>(k.x) * 73856093ULL ^
-                       static_cast<std::uint64_t>(k.y) * 19349663ULL ^
-                       static_cast<std::uint64_t>(k.z) * 83492791ULL;
-        return static_cast<std::size_t>(h ^ (h >> 29));
-    }
-};
 
 void check_options(const WeldOptions& options) {
     if (!std::isfinite(options.tolerance) || options.tolerance < 0.0)
@@ -73,7 +59,7 @@ std::vector<std::int32_t> representatives(const Mesh& mesh, const WeldOptions& o
     double cell = std::max(options.tolerance, max_abs * kMinRelativeCellSize);
     if (!(cell > 0.0)) cell = 1.0;  // every vertex at the origin, tolerance 0
 
-    std::vector<CellKey> keys(n);
+    std::vector<GridCell> keys(n);
     for (std::int32_t i = 0; i < n; ++i) {
         const Eigen::Vector3d c = (mesh.positions[i] / cell).array().floor();
         keys[i] = {static_cast<std::int64_t>(c.x()), static_cast<std::int64_t>(c.y()),
@@ -87,7 +73,7 @@ std::vector<std::int32_t> representatives(const Mesh& mesh, const WeldOptions& o
         return std::tie(keys[a].x, keys[a].y, keys[a].z, a) <
                std::tie(keys[b].x, keys[b].y, keys[b].z, b);
     });
-    std::unordered_map<CellKey, std::pair<std::int32_t, std::int32_t>, CellKeyHash> cells;
+    std::unordered_map<GridCell, std::pair<std::int32_t, std::int32_t>, GridCellHash> cells;
     cells.reserve(static_cast<std::size_t>(n));
     for (std::int32_t begin = 0, end = 0; begin < n; begin = end) {
         while (end < n && keys[by_cell[end]] == keys[by_cell[begin]]) ++end;

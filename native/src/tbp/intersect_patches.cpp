@@ -6,6 +6,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "mesh/grid_cell.h"
 #include "tbp/triangle_intersection.h"
 
 namespace trimkit::tbp {
@@ -71,32 +72,24 @@ class PointWelder {
 public:
     explicit PointWelder(double tol) : tol_(tol), cell_(std::max(tol, 1e-300) * 2) {}
     int insert(const Eigen::Vector3d& p) {
-        const auto key = cell_of(p);
+        const mesh::GridCell key = mesh::GridCell::of(p, cell_);
         for (int dx = -1; dx <= 1; ++dx)
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dz = -1; dz <= 1; ++dz) {
-                    auto it = grid_.find(hash({std::get<0>(key) + dx, std::get<1>(key) + dy, std::get<2>(key) + dz}));
+                    auto it = grid_.find({key.x + dx, key.y + dy, key.z + dz});
                     if (it == grid_.end()) continue;
                     for (int id : it->second)
                         if ((points_[id] - p).norm() <= tol_) return id;
                 }
         points_.push_back(p);
-        grid_[hash(key)].push_back(static_cast<int>(points_.size()) - 1);
+        grid_[key].push_back(static_cast<int>(points_.size()) - 1);
         return static_cast<int>(points_.size()) - 1;
     }
 
 private:
-    using Key = std::tuple<long long, long long, long long>;
-    Key cell_of(const Eigen::Vector3d& p) const {
-        return {static_cast<long long>(std::floor(p.x() / cell_)), static_cast<long long>(std::floor(p.y() / cell_)),
-                static_cast<long long>(std::floor(p.z() / cell_))};
-    }
-    static std::size_t hash(const Key& k) {
-        return static_cast<std::size_t>(std::get<0>(k) * 73856093ll ^ std::get<1>(k) * 19349663ll ^ std::get<2>(k) * 83492791ll);
-    }
     double tol_, cell_;
     std::vector<Eigen::Vector3d> points_;
-    std::unordered_map<std::size_t, std::vector<int>> grid_;
+    std::unordered_map<mesh::GridCell, std::vector<int>, mesh::GridCellHash> grid_;
 };
 
 }  // namespace

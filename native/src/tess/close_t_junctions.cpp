@@ -7,10 +7,13 @@
 #include <vector>
 
 #include "tess/snap_boundary_vertices.h"
-#include "tess/grid_cell.h"
+#include "mesh/grid_cell.h"
 #include "tess/unpaired_sides.h"
 
 namespace trimkit::tess {
+
+using mesh::GridCell;
+using mesh::GridCellHash;
 namespace {
 
 // Passes over the open edges; each pass splits every triangle at most once, and a

@@ -9,10 +9,13 @@
 
 #include <Eigen/Geometry>
 
-#include "tess/grid_cell.h"
+#include "mesh/grid_cell.h"
 #include "tess/triangulate_polygon.h"
 
 namespace trimkit::tess {
+
+using mesh::GridCell;
+using mesh::GridCellHash;
 
 namespace {
 

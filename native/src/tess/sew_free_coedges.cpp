@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "mesh/grid_cell.h"
 #include "tess/share_edge_points.h"
 
 namespace trimkit::tess {
@@ -84,16 +85,16 @@ std::vector<Trace> free_traces(const geom::Model& model, double distance) {
 class EndGrid {
 public:
     explicit EndGrid(double cell) : cell_(cell) {}
-    void add(const Eigen::Vector3d& p, int trace) { cells_[key(cell_of(p))].push_back(trace); }
+    void add(const Eigen::Vector3d& p, int trace) { cells_[mesh::GridCell::of(p, cell_)].push_back(trace); }
     // Traces with an end in the 27 cells around p; none when more than kMaxEndsNearby.
     std::vector<int> near(const Eigen::Vector3d& p) const {
         std::vector<const std::vector<int>*> lists;
         std::size_t count = 0;
-        const auto c = cell_of(p);
+        const mesh::GridCell c = mesh::GridCell::of(p, cell_);
         for (int dx = -1; dx <= 1; ++dx)
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dz = -1; dz <= 1; ++dz) {
-                    const auto it = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+                    const auto it = cells_.find({c.x + dx, c.y + dy, c.z + dz});
                     if (it == cells_.end()) continue;
                     lists.push_back(&it->second);
                     count += it->second.size();
@@ -107,17 +108,8 @@ public:
     }
 
 private:
-    std::array<std::int64_t, 3> cell_of(const Eigen::Vector3d& p) const {
-        return {static_cast<std::int64_t>(std::floor(p.x() / cell_)), static_cast<std::int64_t>(std::floor(p.y() / cell_)),
-                static_cast<std::int64_t>(std::floor(p.z() / cell_))};
-    }
-    static std::uint64_t key(const std::array<std::int64_t, 3>& c) {
-        std::uint64_t h = 1469598103934665603ull;
-        for (std::int64_t v : c) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
-        return h;
-    }
     double cell_;
-    std::unordered_map<std::uint64_t, std::vector<int>> cells_;
+    std::unordered_map<mesh::GridCell, std::vector<int>, mesh::GridCellHash> cells_;
 };
 
 // Whether b runs along a in a's direction, from where a's points at 1/3 and 2/3

@@ -11,10 +11,13 @@
 
 #include <Eigen/Geometry>
 
-#include "tess/grid_cell.h"
+#include "mesh/grid_cell.h"
 #include "tess/unpaired_sides.h"
 
 namespace trimkit::tess {
+
+using mesh::GridCell;
+using mesh::GridCellHash;
 namespace {
 
 bool position_less(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
