@@ -18,6 +18,7 @@ PATH_KEY = "trimkit_path"
 FORM_KEY = "trimkit_stored_form"      # "source" or "tkz"
 SOURCE_BYTES_KEY = "trimkit_source_bytes"  # the source file's size, and zlib-compressed
 SOURCE_ZLIB_KEY = "trimkit_source_zlib_bytes"
+STORED_BYTES_KEY = "trimkit_stored_bytes"  # len(text[KEY]), so the panel need not copy it
 
 
 def store(name, data, path=None, model=None):
@@ -68,6 +69,7 @@ def replace(text, data, model=None):
     text[FORM_KEY] = form
     text[SOURCE_BYTES_KEY] = len(data)
     text[SOURCE_ZLIB_KEY] = len(source)
+    text[STORED_BYTES_KEY] = len(stored)
     name = file_name(text)
     what = (f"its model as a lossless .tkz ({len(stored)} bytes zlib-compressed; the file: {len(data)} bytes, "
             f"{len(source)} zlib-compressed)" if form == "tkz" else f"the file ({len(data)} bytes, zlib-compressed)")
@@ -79,6 +81,6 @@ def replace(text, data, model=None):
 def sizes(text):
     """(form, stored bytes, source bytes, source zlib bytes) for the panel; None for a
     datablock stored before the sizes were kept."""
-    if text is None or KEY not in text or FORM_KEY not in text:
+    if text is None or FORM_KEY not in text or STORED_BYTES_KEY not in text:
         return None
-    return text[FORM_KEY], len(bytes(text[KEY])), text.get(SOURCE_BYTES_KEY, 0), text.get(SOURCE_ZLIB_KEY, 0)
+    return text[FORM_KEY], text[STORED_BYTES_KEY], text.get(SOURCE_BYTES_KEY, 0), text.get(SOURCE_ZLIB_KEY, 0)
