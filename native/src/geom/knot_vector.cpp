@@ -1,6 +1,7 @@
 // Knot vector validation and queries (see knot_vector.h for the rules).
 #include "geom/knot_vector.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -113,6 +114,14 @@ std::vector<double> bezier_knots(int p, double a, double b) {
     std::vector<double> U(2 * static_cast<size_t>(p + 1), a);
     for (int i = p + 1; i < 2 * (p + 1); ++i) U[i] = b;
     return U;
+}
+
+double snap_to_knot(const std::vector<double>& U, double t, double tol) {
+    auto it = std::lower_bound(U.begin(), U.end(), t);
+    double best = t, dist = tol;
+    if (it != U.end() && std::abs(*it - t) <= dist) { best = *it; dist = std::abs(*it - t); }
+    if (it != U.begin() && std::abs(*(it - 1) - t) <= dist) best = *(it - 1);
+    return best;
 }
 
 }  // namespace trimkit::geom

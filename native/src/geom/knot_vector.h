@@ -25,6 +25,10 @@ std::vector<double> distinct_knots(const std::vector<double>& U, int p);
 // Multiplicity of knot value u in U (knots within kKnotTolerance * domain length).
 int knot_multiplicity(const std::vector<double>& U, double u);
 
+// t moved onto the nearest knot of U when closer than tol (callers pass
+// kKnotTolerance * domain length), so near-duplicate knots are never created.
+double snap_to_knot(const std::vector<double>& U, double t, double tol);
+
 // Clamped uniform knot vector for n+1 points of degree p on [a, b].
 std::vector<double> uniform_clamped_knots(int point_count, int p, double a = 0.0,
                                           double b = 1.0);

@@ -10,6 +10,7 @@
 #include "geom/bspline_basis.h"
 #include "geom/error.h"
 #include "geom/rational_weights.h"
+#include "geom/knot_insertion.h"
 #include "geom/knot_vector.h"
 
 namespace trimkit::geom {
@@ -23,15 +24,6 @@ std::string point_text(const Eigen::Matrix<double, Dim, 1>& P) {
     return text + ")";
 }
 
-// t moved onto the nearest knot when closer than kKnotTolerance * domain length,
-// so near-duplicate knots are never created.
-double snap_to_knot(const std::vector<double>& U, double t, double tol) {
-    auto it = std::lower_bound(U.begin(), U.end(), t);
-    double best = t, dist = tol;
-    if (it != U.end() && std::abs(*it - t) <= dist) { best = *it; dist = std::abs(*it - t); }
-    if (it != U.begin() && std::abs(*(it - 1) - t) <= dist) best = *(it - 1);
-    return best;
-}
 
 }  // namespace
 
@@ -133,62 +125,34 @@ std::vector<typename NurbsCurve<Dim>::Point> NurbsCurve<Dim>::derivatives(double
     return CK;
 }
 
-// [PT] Algorithm A5.1 on homogeneous points Pw = (w P, w).
+// [PT] Algorithm A5.1 on homogeneous points Pw = (w P, w) (geom/knot_insertion.h).
 template <int Dim>
 NurbsCurve<Dim> NurbsCurve<Dim>::insert_knot(double t, int times) const {
-    if (times < 0)
-        throw InvalidInput("NurbsCurve::insert_knot: times = " + std::to_string(times) +
-                           "; expected >= 0");
-    const auto [a, b] = domain();
-    if (!(t >= a && t <= b))
-        throw InvalidInput("NurbsCurve::insert_knot: t = " + format_value(t) +
-                           " outside the domain [" + format_value(a) + ", " +
-                           format_value(b) + "]");
-    t = snap_to_knot(U_, t, kKnotTolerance * (b - a));
-    const int s = static_cast<int>(std::count(U_.begin(), U_.end(), t));
-    const int r = std::min(times, p_ - s);
-    if (r <= 0) return *this;
-    // U[k] <= t < U[k+1]; t < U[m] here, since t == U[m] would mean s >= p + 1.
-    const int k = static_cast<int>(std::upper_bound(U_.begin(), U_.end(), t) - U_.begin()) - 1;
-    const int p = p_, np = static_cast<int>(P_.size()) - 1;
+    const KnotInsertion plan = plan_knot_insertion(U_, p_, t, times, "NurbsCurve::insert_knot");
+    if (plan.r == 0) return *this;
+    return from_homogeneous(p_, plan.knots, geom::insert_knot(plan, homogeneous_points()), rational_);
+}
 
-    using HPoint = Eigen::Matrix<double, Dim + 1, 1>;
-    auto Pw = [&](int i) {
-        HPoint h;
-        h << w_[i] * P_[i], w_[i];
-        return h;
-    };
-    std::vector<HPoint> Qw(np + 1 + r);
-    for (int i = 0; i <= k - p; ++i) Qw[i] = Pw(i);
-    for (int i = k - s; i <= np; ++i) Qw[i + r] = Pw(i);
-    HPoint Rw[kMaxDegree + 1];
-    for (int i = 0; i <= p - s; ++i) Rw[i] = Pw(k - p + i);
-    int L = k - p;
-    for (int j = 1; j <= r; ++j) {
-        L = k - p + j;
-        for (int i = 0; i <= p - j - s; ++i) {
-            const double alpha = (t - U_[L + i]) / (U_[i + k + 1] - U_[L + i]);
-            Rw[i] = alpha * Rw[i + 1] + (1.0 - alpha) * Rw[i];
-        }
-        Qw[L] = Rw[0];
-        Qw[k + r - j - s] = Rw[p - j - s];
-    }
-    for (int i = L + 1; i < k - s; ++i) Qw[i] = Rw[i - L];
+template <int Dim>
+std::vector<HomogeneousPoint<Dim>> NurbsCurve<Dim>::homogeneous_points() const {
+    std::vector<HomogeneousPoint<Dim>> H(P_.size());
+    for (size_t i = 0; i < P_.size(); ++i) H[i] = homogeneous<Dim>(P_[i], w_[i]);
+    return H;
+}
 
+template <int Dim>
+NurbsCurve<Dim> NurbsCurve<Dim>::from_homogeneous(int p, std::vector<double> knots,
+                                                  const std::vector<HomogeneousPoint<Dim>>& H,
+                                                  bool rational) {
     NurbsCurve result;
-    result.p_ = p_;
-    result.rational_ = rational_;
-    result.U_.reserve(U_.size() + r);
-    result.U_.insert(result.U_.end(), U_.begin(), U_.begin() + k + 1);
-    result.U_.insert(result.U_.end(), r, t);
-    result.U_.insert(result.U_.end(), U_.begin() + k + 1, U_.end());
-    result.P_.resize(Qw.size());
-    result.w_.resize(Qw.size());
-    for (size_t i = 0; i < Qw.size(); ++i) {
-        // Not rational: w stays exactly 1, so P is read off without a division.
-        result.w_[i] = rational_ ? Qw[i][Dim] : 1.0;
-        result.P_[i] = rational_ ? Point(Qw[i].template head<Dim>() / Qw[i][Dim])
-                                 : Point(Qw[i].template head<Dim>());
+    result.p_ = p;
+    result.rational_ = rational;
+    result.U_ = std::move(knots);
+    result.P_.resize(H.size());
+    result.w_.resize(H.size());
+    for (size_t i = 0; i < H.size(); ++i) {
+        result.w_[i] = rational ? H[i][Dim] : 1.0;
+        result.P_[i] = euclidean<Dim>(H[i], rational);
     }
     return result;
 }
@@ -233,20 +197,20 @@ NurbsCurve<Dim> NurbsCurve<Dim>::sub_curve(double a, double b) const {
     return extract(insert_knot(a, p_).insert_knot(b, p_), a, b);
 }
 
-// [PT] Algorithm A5.6 in effect: every distinct knot in the domain raised to
-// multiplicity p, then one clamped piece per span.
+// [PT] Algorithm A5.6 (geom/knot_insertion.h): one clamped piece per span.
 template <int Dim>
 std::vector<NurbsCurve<Dim>> NurbsCurve<Dim>::bezier_segments() const {
-    const auto [a, b] = domain();
-    std::vector<double> breaks;
-    for (double x : U_)
-        if (x >= a && x <= b && (breaks.empty() || x != breaks.back())) breaks.push_back(x);
-    NurbsCurve refined = *this;
-    for (double x : breaks) refined = refined.insert_knot(x, p_);
+    const DomainClamp clamp = plan_domain_clamp(U_, p_, "NurbsCurve::bezier_segments");
+    const BezierPieces<HomogeneousPoint<Dim>> pieces = bezier_pieces(clamp, p_, homogeneous_points());
+    const size_t width = static_cast<size_t>(p_) + 1;
     std::vector<NurbsCurve> segments;
-    segments.reserve(breaks.size() - 1);
-    for (size_t i = 0; i + 1 < breaks.size(); ++i)
-        segments.push_back(extract(refined, breaks[i], breaks[i + 1]));
+    segments.reserve(pieces.breaks.size() - 1);
+    for (size_t q = 0; q + 1 < pieces.breaks.size(); ++q) {
+        std::vector<HomogeneousPoint<Dim>> H(pieces.points.begin() + q * width,
+                                             pieces.points.begin() + (q + 1) * width);
+        segments.push_back(from_homogeneous(p_, bezier_knots(p_, pieces.breaks[q], pieces.breaks[q + 1]),
+                                            H, rational_));
+    }
     return segments;
 }
 

@@ -56,6 +56,12 @@ public:
     NurbsCurve transformed(const Eigen::Transform<double, Dim, Eigen::Affine>& T) const;
 
 private:
+    // Pw = (w P, w) per control point, and the curve made from such points.
+    std::vector<Eigen::Matrix<double, Dim + 1, 1>> homogeneous_points() const;
+    static NurbsCurve from_homogeneous(int p, std::vector<double> knots,
+                                       const std::vector<Eigen::Matrix<double, Dim + 1, 1>>& H,
+                                       bool rational);
+
     int p_ = 0;
     std::vector<double> U_;
     std::vector<Point> P_;

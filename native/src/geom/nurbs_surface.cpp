@@ -10,6 +10,7 @@
 #include "geom/bspline_basis.h"
 #include "geom/error.h"
 #include "geom/rational_weights.h"
+#include "geom/knot_insertion.h"
 #include "geom/knot_vector.h"
 
 namespace trimkit::geom {
@@ -29,14 +30,6 @@ constexpr double kNormalOffsets[] = {1e-7, 1e-5, 1e-3};
 std::string point_text(const Eigen::Vector3d& P) {
     return "(" + format_value(P.x()) + ", " + format_value(P.y()) + ", " +
            format_value(P.z()) + ")";
-}
-
-double snap_to_knot(const std::vector<double>& U, double t, double tol) {
-    auto it = std::lower_bound(U.begin(), U.end(), t);
-    double best = t, dist = tol;
-    if (it != U.end() && std::abs(*it - t) <= dist) { best = *it; dist = std::abs(*it - t); }
-    if (it != U.begin() && std::abs(*(it - 1) - t) <= dist) best = *(it - 1);
-    return best;
 }
 
 std::pair<double, double> knot_domain(const std::vector<double>& U, int p) {
@@ -78,15 +71,6 @@ NurbsSurface crop_u(const NurbsSurface& S, double a, double b) {
     const int kb = std::clamp(static_cast<int>(std::lower_bound(U.begin(), U.end(), b) - U.begin()) - 1, ka, last);
     if (ka == p && kb == last) return S;
     return rows_u(S, ka - p, kb + 1, std::vector<double>(U.begin() + (ka - p), U.begin() + (kb + p + 2)));
-}
-
-// Exact distinct knot values inside [U[p], U[n+1]].
-std::vector<double> breakpoints(const std::vector<double>& U, int p) {
-    const auto [a, b] = knot_domain(U, p);
-    std::vector<double> breaks;
-    for (double x : U)
-        if (x >= a && x <= b && (breaks.empty() || x != breaks.back())) breaks.push_back(x);
-    return breaks;
 }
 
 }  // namespace
@@ -276,98 +260,89 @@ Eigen::Vector3d NurbsSurface::normal(double u, double v) const {
                            "): Su x Sv vanishes there and nearby");
 }
 
-// [PT] Algorithm A5.3, u direction, on homogeneous points: the alphas are
-// computed once and applied to each column j of the grid.
+// [PT] Algorithm A5.3: the plan of A5.1 (geom/knot_insertion.h), worked out once from
+// the u knots, applied to each column j of the grid.
 NurbsSurface NurbsSurface::insert_knot_u(double u, int times) const {
-    if (times < 0)
-        throw InvalidInput("NurbsSurface::insert_knot_u: times = " + std::to_string(times) +
-                           "; expected >= 0");
-    const auto [a, b] = domain_u();
-    if (!(u >= a && u <= b))
-        throw InvalidInput("NurbsSurface::insert_knot: u = " + format_value(u) +
-                           " outside the domain [" + format_value(a) + ", " +
-                           format_value(b) + "]");
-    u = snap_to_knot(U_, u, kKnotTolerance * (b - a));
-    const int p = pu_;
-    const int s = static_cast<int>(std::count(U_.begin(), U_.end(), u));
-    const int r = std::min(times, p - s);
-    if (r <= 0) return *this;
-    const int k = static_cast<int>(std::upper_bound(U_.begin(), U_.end(), u) - U_.begin()) - 1;
-    const int np = nu_ - 1;
-
-    double alpha[kMaxDegree + 1][kMaxDegree + 1];
-    for (int j = 1; j <= r; ++j) {
-        const int L = k - p + j;
-        for (int i = 0; i <= p - j - s; ++i)
-            alpha[i][j] = (u - U_[L + i]) / (U_[i + k + 1] - U_[L + i]);
+    const KnotInsertion plan = plan_knot_insertion(U_, pu_, u, times, "NurbsSurface::insert_knot_u");
+    if (plan.r == 0) return *this;
+    const int nu = nu_ + plan.r;
+    std::vector<Eigen::Vector4d> grid(static_cast<size_t>(nu) * nv_);
+    for (int j = 0; j < nv_; ++j) {
+        const std::vector<Eigen::Vector4d> column = geom::insert_knot(plan, homogeneous_column(j));
+        for (int i = 0; i < nu; ++i) grid[static_cast<size_t>(i) * nv_ + j] = column[i];
     }
-
-    NurbsSurface result;
-    result.pu_ = pu_;
-    result.pv_ = pv_;
-    result.V_ = V_;
-    result.nu_ = nu_ + r;
-    result.nv_ = nv_;
-    result.rational_ = rational_;
-    result.U_.reserve(U_.size() + r);
-    result.U_.insert(result.U_.end(), U_.begin(), U_.begin() + k + 1);
-    result.U_.insert(result.U_.end(), r, u);
-    result.U_.insert(result.U_.end(), U_.begin() + k + 1, U_.end());
-
-    std::vector<Eigen::Vector4d> Qw(static_cast<size_t>(result.nu_) * nv_);
-    auto Pw = [&](int i, int col) {
-        const size_t idx = static_cast<size_t>(i) * nv_ + col;
-        Eigen::Vector4d h;
-        h << w_[idx] * P_[idx], w_[idx];
-        return h;
-    };
-    auto Q = [&](int i, int col) -> Eigen::Vector4d& {
-        return Qw[static_cast<size_t>(i) * nv_ + col];
-    };
-    Eigen::Vector4d Rw[kMaxDegree + 1];
-    for (int col = 0; col < nv_; ++col) {
-        for (int i = 0; i <= k - p; ++i) Q(i, col) = Pw(i, col);
-        for (int i = k - s; i <= np; ++i) Q(i + r, col) = Pw(i, col);
-        for (int i = 0; i <= p - s; ++i) Rw[i] = Pw(k - p + i, col);
-        int L = k - p;
-        for (int j = 1; j <= r; ++j) {
-            L = k - p + j;
-            for (int i = 0; i <= p - j - s; ++i)
-                Rw[i] = alpha[i][j] * Rw[i + 1] + (1.0 - alpha[i][j]) * Rw[i];
-            Q(L, col) = Rw[0];
-            Q(k + r - j - s, col) = Rw[p - j - s];
-        }
-        for (int i = L + 1; i < k - s; ++i) Q(i, col) = Rw[i - L];
-    }
-    result.P_.resize(Qw.size());
-    result.w_.resize(Qw.size());
-    for (size_t i = 0; i < Qw.size(); ++i) {
-        // Not rational: w stays exactly 1, so P is read off without a division.
-        result.w_[i] = rational_ ? Qw[i][3] : 1.0;
-        result.P_[i] = rational_ ? Eigen::Vector3d(Qw[i].head<3>() / Qw[i][3])
-                                 : Eigen::Vector3d(Qw[i].head<3>());
-    }
-    return result;
+    return from_homogeneous(pu_, pv_, plan.knots, V_, nu, nv_, grid, rational_);
 }
 
 NurbsSurface NurbsSurface::insert_knot_v(double v, int times) const {
     return swapped_uv().insert_knot_u(v, times).swapped_uv();
 }
 
+std::vector<Eigen::Vector4d> NurbsSurface::homogeneous_column(int j) const {
+    std::vector<Eigen::Vector4d> column(nu_);
+    for (int i = 0; i < nu_; ++i) {
+        const size_t idx = static_cast<size_t>(i) * nv_ + j;
+        column[i] = homogeneous<3>(P_[idx], w_[idx]);
+    }
+    return column;
+}
+
+NurbsSurface NurbsSurface::from_homogeneous(int pu, int pv, std::vector<double> U,
+                                            std::vector<double> V, int nu, int nv,
+                                            const std::vector<Eigen::Vector4d>& grid, bool rational) {
+    NurbsSurface result;
+    result.pu_ = pu;
+    result.pv_ = pv;
+    result.U_ = std::move(U);
+    result.V_ = std::move(V);
+    result.nu_ = nu;
+    result.nv_ = nv;
+    result.rational_ = rational;
+    result.P_.resize(grid.size());
+    result.w_.resize(grid.size());
+    for (size_t i = 0; i < grid.size(); ++i) {
+        result.w_[i] = rational ? grid[i][3] : 1.0;
+        result.P_[i] = euclidean<3>(grid[i], rational);
+    }
+    return result;
+}
+
+// [PT] Algorithm A5.6 on each column (u pieces), then on each row of the result (v
+// pieces): O(nu nv (pu^2 + pv^2)), where inserting every knot in turn copied the whole
+// grid once per knot.
 std::vector<NurbsSurface> NurbsSurface::bezier_patches() const {
-    const std::vector<double> bu = breakpoints(U_, pu_), bv = breakpoints(V_, pv_);
-    NurbsSurface refined = *this;
-    for (double x : bu) refined = refined.insert_knot_u(x, pu_);
-    refined = refined.swapped_uv();
-    for (double x : bv) refined = refined.insert_knot_u(x, pv_);
-    refined = refined.swapped_uv();
+    const char* owner = "NurbsSurface::bezier_patches";
+    const DomainClamp clamp_u = plan_domain_clamp(U_, pu_, owner), clamp_v = plan_domain_clamp(V_, pv_, owner);
+    const size_t wu = static_cast<size_t>(pu_) + 1, wv = static_cast<size_t>(pv_) + 1;
+    // pieces_u[j]: column j cut at the u breaks (rows piece-major).
+    std::vector<double> bu, bv;
+    std::vector<std::vector<Eigen::Vector4d>> pieces_u(nv_);
+    for (int j = 0; j < nv_; ++j) {
+        BezierPieces<Eigen::Vector4d> cut = bezier_pieces(clamp_u, pu_, homogeneous_column(j));
+        pieces_u[j] = std::move(cut.points);
+        bu = std::move(cut.breaks);
+    }
+    const size_t rows = pieces_u[0].size();
+    // grid[row][v piece point]: each row of the u-cut grid cut at the v breaks.
+    std::vector<std::vector<Eigen::Vector4d>> grid(rows);
+    for (size_t row = 0; row < rows; ++row) {
+        std::vector<Eigen::Vector4d> line(nv_);
+        for (int j = 0; j < nv_; ++j) line[j] = pieces_u[j][row];
+        BezierPieces<Eigen::Vector4d> cut = bezier_pieces(clamp_v, pv_, std::move(line));
+        grid[row] = std::move(cut.points);
+        bv = std::move(cut.breaks);
+    }
     std::vector<NurbsSurface> patches;
     patches.reserve((bu.size() - 1) * (bv.size() - 1));
-    for (size_t i = 0; i + 1 < bu.size(); ++i) {
-        const NurbsSurface strip = extract_u(refined, bu[i], bu[i + 1]).swapped_uv();
-        for (size_t j = 0; j + 1 < bv.size(); ++j)
-            patches.push_back(extract_u(strip, bv[j], bv[j + 1]).swapped_uv());
-    }
+    for (size_t a = 0; a + 1 < bu.size(); ++a)
+        for (size_t b = 0; b + 1 < bv.size(); ++b) {
+            std::vector<Eigen::Vector4d> H(wu * wv);
+            for (size_t i = 0; i < wu; ++i)
+                for (size_t j = 0; j < wv; ++j) H[i * wv + j] = grid[a * wu + i][b * wv + j];
+            patches.push_back(from_homogeneous(pu_, pv_, bezier_knots(pu_, bu[a], bu[a + 1]),
+                                               bezier_knots(pv_, bv[b], bv[b + 1]), static_cast<int>(wu),
+                                               static_cast<int>(wv), H, rational_));
+        }
     return patches;
 }
 

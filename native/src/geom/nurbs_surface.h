@@ -63,6 +63,12 @@ public:
     NurbsSurface transformed(const Eigen::Affine3d& T) const;
 
 private:
+    // Pw = (w P, w) of column j (points (0..nu-1, j)), and the surface made from such a grid.
+    std::vector<Eigen::Vector4d> homogeneous_column(int j) const;
+    static NurbsSurface from_homogeneous(int pu, int pv, std::vector<double> U, std::vector<double> V,
+                                         int nu, int nv, const std::vector<Eigen::Vector4d>& grid,
+                                         bool rational);
+
     int pu_ = 0, pv_ = 0;
     std::vector<double> U_, V_;
     int nu_ = 0, nv_ = 0;

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <set>
 
+#include "mesh/triangulate_polygon.h"
+
 namespace trimkit::tbp {
 namespace {
 
@@ -141,54 +143,6 @@ public:
     }
 };
 
-// Ear clipping of a simple (or weakly simple) counter-clockwise polygon.
-std::vector<std::array<int, 3>> ear_clip(const std::vector<Eigen::Vector2d>& pts, std::vector<int> poly) {
-    std::vector<std::array<int, 3>> out;
-    auto inside = [&](const Eigen::Vector2d& p, int a, int b, int c) {
-        return cross2(pts[b] - pts[a], p - pts[a]) > 0 && cross2(pts[c] - pts[b], p - pts[b]) > 0 &&
-               cross2(pts[a] - pts[c], p - pts[c]) > 0;
-    };
-    while (poly.size() > 3) {
-        const std::size_t n = poly.size();
-        bool clipped = false;
-        // prefer the ear with the largest area for well-shaped triangles
-        int best = -1;
-        double best_area = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            const int a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
-            const double area = cross2(pts[b] - pts[a], pts[c] - pts[a]);
-            if (area <= 0) continue;
-            bool ear = true;
-            for (int v : poly)
-                if (v != a && v != b && v != c && pts[v] != pts[a] && pts[v] != pts[b] && pts[v] != pts[c] &&
-                    inside(pts[v], a, b, c)) {
-                    ear = false;
-                    break;
-                }
-            if (ear && area > best_area) best = static_cast<int>(i), best_area = area;
-        }
-        if (best >= 0) {
-            out.push_back({poly[(best + n - 1) % n], poly[best], poly[(best + 1) % n]});
-            poly.erase(poly.begin() + best);
-            clipped = true;
-        }
-        if (!clipped) {
-            // Degenerate remainder (collinear points): drop a vertex with zero turn.
-            std::size_t drop = 0;
-            double smallest = INFINITY;
-            for (std::size_t i = 0; i < n; ++i) {
-                const int a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
-                const double area = std::abs(cross2(pts[b] - pts[a], pts[c] - pts[a]));
-                if (area < smallest) smallest = area, drop = i;
-            }
-            poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(drop));
-        }
-    }
-    if (poly.size() == 3 && cross2(pts[poly[1]] - pts[poly[0]], pts[poly[2]] - pts[poly[0]]) > 0)
-        out.push_back({poly[0], poly[1], poly[2]});
-    return out;
-}
-
 }  // namespace
 
 TriangleArrangement arrange_triangle(const std::vector<std::array<Eigen::Vector2d, 2>>& cuts) {
@@ -234,7 +188,7 @@ TriangleArrangement arrange_triangle(const std::vector<std::array<Eigen::Vector2
             if (area <= 0) continue;  // the outer boundary, traversed clockwise
             ArrangementFace f;
             f.polygon = poly;
-            f.triangles = ear_clip(g.pts, poly);
+            f.triangles = mesh::triangulate_polygon(g.pts, poly);
             double best = -1;
             for (const auto& tri : f.triangles) {
                 const double ta = cross2(g.pts[tri[1]] - g.pts[tri[0]], g.pts[tri[2]] - g.pts[tri[0]]);

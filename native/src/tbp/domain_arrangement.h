@@ -1,9 +1,9 @@
 // The arrangement of cut segments inside one triangle of a patch's domain
 // ([Garcia] Sec. 5 phases b and c): the segments and the triangle's sides are
 // split at every crossing, dangling ends are dropped, and the triangle is cut
-// into faces (simple polygons), each triangulated by ear clipping. Coordinates
-// are the triangle's local barycentric (alpha, beta) with corners (1,0), (0,1),
-// (0,0) (roles u, v, w of the node), so the same tolerance fits every level.
+// into faces (simple polygons), each triangulated by mesh/triangulate_polygon.h.
+// Coordinates are the triangle's local barycentric (alpha, beta) with corners (1,0),
+// (0,1), (0,0) (roles u, v, w of the node), so the same tolerance fits every level.
 #pragma once
 
 #include <array>

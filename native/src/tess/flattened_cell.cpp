@@ -2,7 +2,7 @@
 
 #include <unordered_map>
 
-#include "tess/triangulate_polygon.h"
+#include "mesh/triangulate_polygon.h"
 
 namespace trimkit::tess {
 namespace {
@@ -59,7 +59,7 @@ std::vector<std::array<int, 3>> triangulate_in_3d_plane(const geom::NurbsSurface
     const std::vector<int> ring = number(outer);
     std::vector<std::vector<int>> local_holes;
     for (const auto& h : holes) local_holes.push_back(number(h));
-    std::vector<std::array<int, 3>> out = triangulate_polygon(plane, ring, local_holes, deadline);
+    std::vector<std::array<int, 3>> out = mesh::triangulate_polygon(plane, ring, local_holes, deadline);
     for (auto& t : out)
         for (int& v : t) v = global[v];
     if (has_backward_triangle(s, uv, xyz, out)) return {};

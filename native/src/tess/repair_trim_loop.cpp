@@ -10,7 +10,7 @@
 #include <Eigen/Geometry>
 
 #include "mesh/grid_cell.h"
-#include "tess/triangulate_polygon.h"
+#include "mesh/triangulate_polygon.h"
 
 namespace trimkit::tess {
 
@@ -61,7 +61,7 @@ double width_on_surface(const std::vector<PolylinePoint>& P, const geom::NurbsSu
         length += (P[(i + 1) % P.size()].xyz - P[i].xyz).norm();
     }
     double area = 0.0;
-    for (const auto& t : triangulate_polygon(uv, ring, {}, deadline)) {
+    for (const auto& t : mesh::triangulate_polygon(uv, ring, {}, deadline)) {
         const Eigen::Vector2d c = (uv[t[0]] + uv[t[1]] + uv[t[2]]) / 3.0;
         const geom::SurfaceDerivatives d = surface.derivatives(c.x(), c.y());
         area += 0.5 * std::abs(cross(uv[t[1]] - uv[t[0]], uv[t[2]] - uv[t[0]])) * d.Su.cross(d.Sv).norm();
@@ -161,7 +161,7 @@ PieceExtent piece_extent(const std::vector<PolylinePoint>& P, const geom::NurbsS
                 }
         return best;
     };
-    for (const auto& t : triangulate_polygon(uv, ring, {}, deadline)) {
+    for (const auto& t : mesh::triangulate_polygon(uv, ring, {}, deadline)) {
         mesh::check_deadline(deadline, "trim loop repair");
         const Eigen::Vector2d o = uv[t[0]];
         const double area3 = 0.5 * (X[t[1]] - X[t[0]]).cross(X[t[2]] - X[t[0]]).norm();

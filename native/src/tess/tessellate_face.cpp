@@ -13,7 +13,7 @@
 #include "tess/kd_subdivision.h"
 #include "tess/snap_trims_to_cell_lines.h"
 #include "tess/surface_evaluator.h"
-#include "tess/triangulate_polygon.h"
+#include "mesh/triangulate_polygon.h"
 #include "tess/trim_cells.h"
 
 namespace trimkit::tess {
@@ -113,7 +113,7 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
         const int side = touched_collapsed_side(face.surface, collapsed, uv, polygon.outer);
         if (side >= 0 && polar[side].empty()) polar[side] = polar_about_side(face.surface, side, uv);
         auto cell_triangles =
-            triangulate_polygon(side >= 0 ? polar[side] : uv, polygon.outer, polygon.holes, deadline);
+            mesh::triangulate_polygon(side >= 0 ? polar[side] : uv, polygon.outer, polygon.holes, deadline);
         if (!polygon.whole_cell) {
             // Trimmed cells: a triangle thin in (u,v) may face backwards in 3D (flattened_cell.h).
             place(polygon.outer);

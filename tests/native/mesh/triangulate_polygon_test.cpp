@@ -1,4 +1,4 @@
-#include "tess/triangulate_polygon.h"
+#include "mesh/triangulate_polygon.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-namespace trimkit::tess {
+namespace trimkit::mesh {
 namespace {
 
 double area(const std::vector<Eigen::Vector2d>& uv, const std::array<int, 3>& t) {
@@ -120,9 +120,9 @@ TEST(TriangulatePolygon, DuplicatesAndTinyInput) {
 }
 
 }  // namespace
-}  // namespace trimkit::tess
+}  // namespace trimkit::mesh
 
-namespace trimkit::tess {
+namespace trimkit::mesh {
 namespace {
 
 // as1-oc-214-mat.stp's plate: one cell holding a 180 x 150 rectangle and six round
@@ -152,4 +152,4 @@ TEST(TriangulatePolygon, HolesBridgedToOneVertexTakeTheFacingCopy) {
 }
 
 }  // namespace
-}  // namespace trimkit::tess
+}  // namespace trimkit::mesh

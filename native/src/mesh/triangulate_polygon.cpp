@@ -1,10 +1,10 @@
-#include "tess/triangulate_polygon.h"
+#include "mesh/triangulate_polygon.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace trimkit::tess {
+namespace trimkit::mesh {
 namespace {
 
 // Twice the signed area of (a, b, c): > 0 for a left turn.
@@ -197,7 +197,7 @@ void clip_convex(const std::vector<Eigen::Vector2d>& uv, const std::vector<int>&
 }
 
 void clip_ears(const std::vector<Eigen::Vector2d>& uv, const std::vector<int>& ring,
-               std::vector<std::array<int, 3>>& out, mesh::Deadline* deadline) {
+               std::vector<std::array<int, 3>>& out, Deadline* deadline) {
     const int n = static_cast<int>(ring.size());
     Eigen::AlignedBox2d box;
     for (int v : ring) box.extend(uv[v]);
@@ -210,7 +210,7 @@ void clip_ears(const std::vector<Eigen::Vector2d>& uv, const std::vector<int>& r
         const Eigen::Vector2d &A = at(a), &B = at(k), &C = at(c);
         if (cross(A, B, C) <= eps) return false;
         for (int j = next[c]; j != a; j = next[j]) {
-            mesh::check_deadline(deadline, "triangulation");
+            check_deadline(deadline, "triangulation");
             const Eigen::Vector2d& P = at(j);
             if (P == A || P == B || P == C) continue;  // duplicated (bridge) vertex
             // Only reflex or flat vertices can lie inside an ear of a simple polygon.
@@ -263,7 +263,7 @@ bool is_convex(const std::vector<Eigen::Vector2d>& uv, const std::vector<int>& r
 std::vector<std::array<int, 3>> triangulate_polygon(const std::vector<Eigen::Vector2d>& uv,
                                                     const std::vector<int>& outer,
                                                     const std::vector<std::vector<int>>& holes,
-                                                    mesh::Deadline* deadline) {
+                                                    Deadline* deadline) {
     std::vector<std::array<int, 3>> triangles;
     std::vector<int> ring = without_duplicates(outer);
     if (ring.size() < 3) return triangles;
@@ -288,11 +288,11 @@ std::vector<std::array<int, 3>> triangulate_polygon(const std::vector<Eigen::Vec
     for (int v : ring) box.extend(uv[v]);
     const double snap = kTouchingRelative * box.diagonal().norm();
     for (const auto& hole : clean) {
-        mesh::check_deadline(deadline, "triangulation");
+        check_deadline(deadline, "triangulation");
         bridge_hole(uv, ring, hole, snap);
     }
     clip_ears(uv, ring, triangles, deadline);
     return triangles;
 }
 
-}  // namespace trimkit::tess
+}  // namespace trimkit::mesh

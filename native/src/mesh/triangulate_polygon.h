@@ -1,4 +1,5 @@
-// Triangulation of one cell polygon in the (u,v) plane [Balazs] Sec. 7. Indices
+// Triangulation of one cell polygon in the (u,v) plane [Balazs] Sec. 7, shared by
+// tess (cell polygons) and tbp (faces of a cut domain triangle). Indices
 // refer to a shared array of (u,v) points; the outer ring runs counter-clockwise,
 // holes clockwise. Triangles come out counter-clockwise in (u,v) and use only the
 // polygon's own vertices (no Steiner points), so neighbouring cells stay conforming.
@@ -12,7 +13,7 @@
 
 #include "mesh/deadline.h"
 
-namespace trimkit::tess {
+namespace trimkit::mesh {
 
 // Convex polygons without holes: ear clipping without containment tests (linear
 // time, the paper's convex case; collinear points on the sides stay vertices).
@@ -23,13 +24,13 @@ namespace trimkit::tess {
 // triangle is emitted rather than a vertex dropped, so the mesh has no gaps.
 // Consecutive duplicate indices are removed first; fewer than 3 vertices give none.
 // deadline: checked while clipping ears (quadratic in the ring's length; a cell or a
-// repaired trim loop piece can have 10^5 vertices); throws mesh::DeadlineExceeded.
+// repaired trim loop piece can have 10^5 vertices); throws DeadlineExceeded.
 std::vector<std::array<int, 3>> triangulate_polygon(const std::vector<Eigen::Vector2d>& uv,
                                                     const std::vector<int>& outer,
                                                     const std::vector<std::vector<int>>& holes = {},
-                                                    mesh::Deadline* deadline = nullptr);
+                                                    Deadline* deadline = nullptr);
 
 // True if the ring turns left or goes straight at every vertex.
 bool is_convex(const std::vector<Eigen::Vector2d>& uv, const std::vector<int>& ring);
 
-}  // namespace trimkit::tess
+}  // namespace trimkit::mesh
