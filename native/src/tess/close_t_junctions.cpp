@@ -25,17 +25,17 @@ constexpr double kMinSplitShare = 1e-6;
 
 }  // namespace
 
-std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerate) {
+std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerate, int threads) {
     std::size_t inserted = 0;
     bool gave_up = false;
     for (int pass = 0; pass < kMaxPasses && !gave_up; ++pass) {
         // Topology by position: a face's vertex and the other face's vertex at the
         // same position are one vertex (each keeps its own uv and normal).
-        const std::vector<std::int32_t> group = position_groups(mesh);
+        const std::vector<std::int32_t> group = position_groups(mesh, false, threads);
         mesh::Mesh topology;
         topology.positions = mesh.positions;
         topology.triangles = position_triangles(mesh, group);
-        const std::vector<TriangleSide> open = unpaired_sides(mesh, topology.triangles);
+        const std::vector<TriangleSide> open = unpaired_sides(mesh, topology.triangles, threads);
         if (open.empty()) break;
         const auto side_ends = [&](const TriangleSide& s) {
             const auto& t = topology.triangles[s.triangle];

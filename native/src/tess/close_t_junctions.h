@@ -24,6 +24,6 @@ namespace trimkit::tess {
 // and *degenerate (if given) is set; the tests and splits would grow with the square
 // of the pile.
 constexpr std::size_t kMaxJunctionTestsPerSide = 256;
-std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerate = nullptr);
+std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerate = nullptr, int threads = 1);
 
 }  // namespace trimkit::tess

@@ -90,11 +90,11 @@ std::vector<HoleSide> shortest_cycle(const mesh::Mesh& mesh, const std::vector<H
 
 }  // namespace
 
-int fill_sliver_holes(mesh::Mesh& mesh, double width, int max_sides) {
-    const std::vector<std::int32_t> group = position_groups(mesh, true);
+int fill_sliver_holes(mesh::Mesh& mesh, double width, int max_sides, int threads) {
+    const std::vector<std::int32_t> group = position_groups(mesh, true, threads);
     const auto topology = position_triangles(mesh, group);
     std::vector<HoleSide> sides;
-    for (const TriangleSide& side : unpaired_sides(mesh, topology)) {
+    for (const TriangleSide& side : unpaired_sides(mesh, topology, threads)) {
         const int next = (side.corner + 1) % 3;
         HoleSide h;
         h.from = topology[side.triangle][next];

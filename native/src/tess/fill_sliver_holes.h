@@ -18,6 +18,6 @@ namespace trimkit::tess {
 // most `width` are filled with a fan (vertices reused, face id of the cycle's first
 // side's triangle), oriented against the sides they close.
 // Returns the number of holes filled.
-int fill_sliver_holes(mesh::Mesh& mesh, double width, int max_sides);
+int fill_sliver_holes(mesh::Mesh& mesh, double width, int max_sides, int threads = 1);
 
 }  // namespace trimkit::tess

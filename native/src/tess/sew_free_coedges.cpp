@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "mesh/grid_cell.h"
+#include "mesh/parallel_for.h"
 #include "tess/share_edge_points.h"
 
 namespace trimkit::tess {
@@ -146,22 +147,26 @@ double pair_gap(const geom::Model& model, const Trace& a, const Trace& b, bool s
     return ba <= distance ? std::max(ab, ba) : INFINITY;
 }
 
-std::vector<Candidate> candidates(const geom::Model& model, const std::vector<Trace>& traces, double distance) {
+// The pairs, trace by trace (on `threads` threads: each pair's gap samples both
+// surfaces), in trace order.
+std::vector<Candidate> candidates(const geom::Model& model, const std::vector<Trace>& traces, double distance,
+                                  int threads) {
     EndGrid grid(distance);
     for (size_t i = 0; i < traces.size(); ++i) {
         grid.add(traces[i].points.front(), static_cast<int>(i));
         grid.add(traces[i].points.back(), static_cast<int>(i));
     }
     const auto close = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& q) { return (p - q).norm() <= distance; };
-    std::vector<Candidate> found;
-    for (size_t i = 0; i < traces.size(); ++i) {
+    std::vector<std::vector<Candidate>> per_trace(traces.size());
+    mesh::parallel_for(static_cast<int>(traces.size()), threads, [&](int i) {
         const Trace& a = traces[i];
+        std::vector<Candidate>& found = per_trace[i];
         std::vector<std::pair<double, int>> ends;  // (distance of both ends, trace)
         // Both ends must match: the back is looked up where the front is crowded (a pole).
         std::vector<int> nearby = grid.near(a.points.front());
         if (nearby.empty()) nearby = grid.near(a.points.back());
         for (int j : nearby) {
-            if (j <= static_cast<int>(i)) continue;
+            if (j <= i) continue;
             const Trace& b = traces[j];
             const double opposite = (a.points.front() - b.points.back()).norm() + (a.points.back() - b.points.front()).norm();
             const double same = (a.points.front() - b.points.front()).norm() + (a.points.back() - b.points.back()).norm();
@@ -176,9 +181,11 @@ std::vector<Candidate> candidates(const geom::Model& model, const std::vector<Tr
             if (!opposite && !same) continue;
             const bool same_direction = opposite && same ? runs_along(model, a, b) : same;
             const double gap = pair_gap(model, a, b, same_direction, distance);
-            if (std::isfinite(gap)) found.push_back({static_cast<int>(i), j, same_direction, gap});
+            if (std::isfinite(gap)) found.push_back({i, j, same_direction, gap});
         }
-    }
+    });
+    std::vector<Candidate> found;
+    for (const std::vector<Candidate>& list : per_trace) found.insert(found.end(), list.begin(), list.end());
     return found;
 }
 
@@ -334,7 +341,7 @@ int apply_splits(geom::Model& model, const std::vector<Trace>& traces,
 
 }  // namespace
 
-SewingReport sew_free_coedges(geom::Model& model, double distance) {
+SewingReport sew_free_coedges(geom::Model& model, double distance, int threads) {
     SewingReport report;
     if (!(distance > 0.0) || !std::isfinite(distance)) return report;
     {
@@ -343,7 +350,7 @@ SewingReport sew_free_coedges(geom::Model& model, double distance) {
         report.splits = apply_splits(model, whole, split_parameters(model, whole, distance), distance);
     }
     const std::vector<Trace> traces = free_traces(model, distance);
-    std::vector<Candidate> found = candidates(model, traces, distance);
+    std::vector<Candidate> found = candidates(model, traces, distance, threads);
     std::stable_sort(found.begin(), found.end(),
                      [](const Candidate& x, const Candidate& y) { return x.gap < y.gap; });
     std::vector<char> used(traces.size(), 0);

@@ -25,6 +25,6 @@ struct SewingReport {
 // wins where a coedge has several. Each pair gets a new Model::edges entry without a
 // 3D curve, running along the first coedge (in face order). Traces shorter than
 // 2 x distance (poles, collapsed sides) are not paired. Returns what was sewn.
-SewingReport sew_free_coedges(geom::Model& model, double distance);
+SewingReport sew_free_coedges(geom::Model& model, double distance, int threads = 1);
 
 }  // namespace trimkit::tess

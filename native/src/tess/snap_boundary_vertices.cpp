@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -12,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "mesh/grid_cell.h"
+#include "mesh/parallel_sort.h"
 #include "tess/unpaired_sides.h"
 
 namespace trimkit::tess {
@@ -24,25 +24,26 @@ bool position_less(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     return std::tie(a.x(), a.y(), a.z()) < std::tie(b.x(), b.y(), b.z());
 }
 
-// Vertices sorted by key, ties by index; equal keys form one group.
+// Vertices sorted by key, ties by index; equal keys form one group. The keys are
+// sorted with their indices beside them (one contiguous array, not an index array
+// that looks its keys up): the model mesh has 10^5-10^6 vertices and the joining
+// stages group them several times.
 template <typename Key>
-std::vector<std::int32_t> groups_by_key(const std::vector<Key>& key) {
+std::vector<std::int32_t> groups_by_key(const std::vector<Key>& key, int threads) {
     const auto n = static_cast<std::int32_t>(key.size());
-    std::vector<std::int32_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
-        if (key[a] != key[b]) return key[a] < key[b];
-        return a < b;
-    });
+    std::vector<std::pair<Key, std::int32_t>> sorted(n);
+    for (std::int32_t i = 0; i < n; ++i) sorted[i] = {key[i], i};
+    mesh::parallel_sort(sorted.begin(), sorted.end(), threads);
     std::vector<std::int32_t> group(n);
     for (std::int32_t k = 0; k < n; ++k)
-        group[order[k]] = k > 0 && key[order[k]] == key[order[k - 1]] ? group[order[k - 1]] : order[k];
+        group[sorted[k].second] =
+            k > 0 && sorted[k].first == sorted[k - 1].first ? group[sorted[k - 1].second] : sorted[k].second;
     return group;
 }
 
 }  // namespace
 
-std::vector<std::int32_t> position_groups(const mesh::Mesh& mesh, bool as_float) {
+std::vector<std::int32_t> position_groups(const mesh::Mesh& mesh, bool as_float, int threads) {
     // Float keys are kept as floats, never rounded back to double: GCC 12 at -O2/-O3
     // left x and y of some vertices unrounded in p.cast<float>().cast<double>() (and
     // in the scalar double(float(x)) spelling), so two vertices written at one float
@@ -54,12 +55,12 @@ std::vector<std::int32_t> position_groups(const mesh::Mesh& mesh, bool as_float)
         for (std::size_t i = 0; i < n; ++i)
             key[i] = {static_cast<float>(mesh.positions[i].x()), static_cast<float>(mesh.positions[i].y()),
                       static_cast<float>(mesh.positions[i].z())};
-        return groups_by_key(key);
+        return groups_by_key(key, threads);
     }
     std::vector<std::array<double, 3>> key(n);
     for (std::size_t i = 0; i < n; ++i)
         key[i] = {mesh.positions[i].x(), mesh.positions[i].y(), mesh.positions[i].z()};
-    return groups_by_key(key);
+    return groups_by_key(key, threads);
 }
 
 std::vector<std::array<std::int32_t, 3>> position_triangles(const mesh::Mesh& mesh,
@@ -70,22 +71,22 @@ std::vector<std::array<std::int32_t, 3>> position_triangles(const mesh::Mesh& me
     return out;
 }
 
-std::size_t count_position_open_edges(const mesh::Mesh& mesh) {
+std::size_t count_position_open_edges(const mesh::Mesh& mesh, int threads) {
     mesh::Mesh topology;
     topology.positions = mesh.positions;
-    topology.triangles = position_triangles(mesh, position_groups(mesh, true));
-    return unpaired_sides(mesh, topology.triangles).size();
+    topology.triangles = position_triangles(mesh, position_groups(mesh, true, threads));
+    return unpaired_sides(mesh, topology.triangles, threads).size();
 }
 
-std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance, bool* degenerate) {
+std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance, bool* degenerate, int threads) {
     if (degenerate) *degenerate = false;
     if (!(tolerance > 0.0) || mesh.positions.empty()) return 0;
-    const std::vector<std::int32_t> group = position_groups(mesh);
+    const std::vector<std::int32_t> group = position_groups(mesh, false, threads);
     mesh::Mesh topology;
     topology.positions = mesh.positions;
     topology.triangles = position_triangles(mesh, group);
     std::vector<std::int32_t> ends;  // position groups on open edges
-    for (const TriangleSide& s : unpaired_sides(mesh, topology.triangles)) {
+    for (const TriangleSide& s : unpaired_sides(mesh, topology.triangles, threads)) {
         ends.push_back(topology.triangles[s.triangle][s.corner]);
         ends.push_back(topology.triangles[s.triangle][(s.corner + 1) % 3]);
     }

@@ -18,7 +18,7 @@ namespace trimkit::tess {
 
 // For every vertex the index of the first vertex at exactly the same position
 // (positions rounded to float when `as_float`, as a float32 file stores them).
-std::vector<std::int32_t> position_groups(const mesh::Mesh& mesh, bool as_float = false);
+std::vector<std::int32_t> position_groups(const mesh::Mesh& mesh, bool as_float = false, int threads = 1);
 
 // The mesh's triangles with every index replaced by its position group.
 std::vector<std::array<std::int32_t, 3>> position_triangles(const mesh::Mesh& mesh,
@@ -26,7 +26,7 @@ std::vector<std::array<std::int32_t, 3>> position_triangles(const mesh::Mesh& me
 
 // Open edges of the position topology (edges used by one triangle, degenerate
 // triangle sides skipped), counted with positions rounded to float as written.
-std::size_t count_position_open_edges(const mesh::Mesh& mesh);
+std::size_t count_position_open_edges(const mesh::Mesh& mesh, int threads = 1);
 
 // Snaps the vertices of open edges (position topology) that lie within
 // `tolerance` (model units, >= 0) onto common positions under the rules above;
@@ -38,6 +38,7 @@ std::size_t count_position_open_edges(const mesh::Mesh& mesh);
 // nothing is snapped and *degenerate (if given) is set; the pairs would grow with the
 // square of the pile, in time and memory.
 constexpr std::size_t kMaxSnapPairsPerEnd = 64;
-std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance, bool* degenerate = nullptr);
+std::size_t snap_boundary_vertices(mesh::Mesh& mesh, double tolerance, bool* degenerate = nullptr,
+                                   int threads = 1);
 
 }  // namespace trimkit::tess

@@ -12,8 +12,9 @@
 #include "geom/error.h"
 #include "geom/flatten_instances.h"
 #include "mesh/deadline.h"
-#include "mesh/parallel_for.h"
 #include "mesh/open_edges.h"
+#include "mesh/parallel_for.h"
+#include "mesh/parallel_sort.h"
 #include "mesh/weld_vertices.h"
 #include "tess/approximate_trim_curve.h"
 #include "tess/area_budget.h"
@@ -202,11 +203,11 @@ std::string without_face_prefix(const std::string& what, int f) {
 
 // Flags face-boundary edges (open, or between different faces) and sharp ones
 // (triangle normals differing by more than `angle`).
-void flag_edges(mesh::Mesh& mesh, double angle) {
+void flag_edges(mesh::Mesh& mesh, double angle, int threads) {
     // Edges by position (vertices are per face): triangle sides sorted by their
     // position groups, in triangle order within an edge; each flagged edge names the
     // vertices of its first triangle.
-    const std::vector<std::int32_t> group = position_groups(mesh);
+    const std::vector<std::int32_t> group = position_groups(mesh, false, threads);
     struct Side {
         int lo, hi, triangle, va, vb;
     };
@@ -218,8 +219,9 @@ void flag_edges(mesh::Mesh& mesh, double angle) {
             const int a = group[va], b = group[vb];
             if (a != b) sides.push_back({std::min(a, b), std::max(a, b), static_cast<int>(t), va, vb});
         }
-    std::stable_sort(sides.begin(), sides.end(),
-                     [](const Side& x, const Side& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); });
+    mesh::parallel_sort(
+        sides.begin(), sides.end(), threads,
+        [](const Side& x, const Side& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); }, true);
     auto normal = [&](int t) {
         const auto& tri = mesh.triangles[t];
         return Eigen::Vector3d((mesh.positions[tri[1]] - mesh.positions[tri[0]])
@@ -315,14 +317,14 @@ void unify_edge_ends(const geom::Model& model, std::vector<std::vector<Eigen::Ve
 // close_t_junctions.h: piled-up vertices, whose joining grows with the square of the
 // pile) the stage that meets it stops, the hole filling (a shortest-cycle search per
 // open side) is skipped, and a warning says so.
-void join_faces(mesh::Mesh& m, double weld_tol, double sliver_width, std::vector<std::string>& warnings) {
+void join_faces(mesh::Mesh& m, double weld_tol, double sliver_width, int threads, std::vector<std::string>& warnings) {
     bool piled = false, crowded = false;
-    snap_boundary_vertices(m, weld_tol, &piled);
+    snap_boundary_vertices(m, weld_tol, &piled, threads);
     if (piled)
         warnings.push_back("joining the faces: more than " + std::to_string(kMaxSnapPairsPerEnd) +
                            " open-edge vertices per open-edge vertex lie within the weld tolerance (a degenerate "
                            "boundary); the faces were not snapped together");
-    close_t_junctions(m, weld_tol, &crowded);
+    close_t_junctions(m, weld_tol, &crowded, threads);
     if (crowded)
         warnings.push_back("joining the faces: more than " + std::to_string(kMaxJunctionTestsPerSide) +
                            " boundary vertices per open edge lie near the open edges (a degenerate boundary); "
@@ -330,7 +332,7 @@ void join_faces(mesh::Mesh& m, double weld_tol, double sliver_width, std::vector
     if (piled || crowded)
         warnings.push_back("joining the faces: sliver holes not filled (degenerate boundary)");
     else
-        fill_sliver_holes(m, sliver_width, kSliverHoleSides);
+        fill_sliver_holes(m, sliver_width, kSliverHoleSides, threads);
 }
 
 FailedFace failed_face(int f, const FaceOutput& out) {
@@ -704,9 +706,9 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     start = Clock::now();
     mesh::Mesh& m = result.mesh;
     if (m.vertex_count() > 0) {
-        join_faces(m, weld_distance, least_scale * trim_tolerance(options), result.warnings);
-        flag_edges(m, options.angle);
-        result.open_edges = count_position_open_edges(m);
+        join_faces(m, weld_distance, least_scale * trim_tolerance(options), threads, result.warnings);
+        flag_edges(m, options.angle, threads);
+        result.open_edges = count_position_open_edges(m, threads);
     }
     result.seconds.weld = seconds_since(start);
     return result;
@@ -788,7 +790,8 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
     // leave each face's boundary within the join's reach of it.
     if (has_free_coedges(model)) {
         geom::Model sewn = model;
-        if (sew_free_coedges(sewn, 2.0 * kWeldShare * options.tolerance).pairs > 0)
+        const int threads = mesh::resolve_threads(options.threads);
+        if (sew_free_coedges(sewn, 2.0 * kWeldShare * options.tolerance, threads).pairs > 0)
             return tessellate_sewn(sewn, options);
     }
     return tessellate_sewn(model, options);

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <tuple>
 
+#include "mesh/parallel_for.h"
+#include "mesh/parallel_sort.h"
+
 namespace trimkit::tess {
 namespace {
 
@@ -22,45 +25,111 @@ void pair_opposite(const std::vector<SideUse>& uses, std::vector<SideUse>& left)
     left.insert(left.end(), backward.begin() + pairs, backward.end());
 }
 
-}  // namespace
+// The uses `group` (one edge) leaves unpaired, in full key order: a plain pair closes
+// (whatever its directions); otherwise forward uses pair with backward ones within each
+// face, then across faces.
+void leftover_of_edge(std::vector<SideUse>::iterator begin, std::vector<SideUse>::iterator end,
+                      std::vector<SideUse>& left) {
+    if (end - begin == 2) return;
+    std::sort(begin, end, [](const SideUse& x, const SideUse& y) { return x.key() < y.key(); });
+    std::vector<SideUse> across;
+    for (auto f = begin; f != end;) {
+        auto g = f + 1;
+        while (g != end && g->face == f->face) ++g;
+        pair_opposite({f, g}, across);
+        f = g;
+    }
+    pair_opposite(across, left);
+}
 
-std::vector<TriangleSide> unpaired_sides(const mesh::Mesh& mesh,
-                                         const std::vector<std::array<std::int32_t, 3>>& topology) {
+bool same_edge(const SideUse& x, const SideUse& y) { return x.lo == y.lo && x.hi == y.hi; }
+
+void sort_by_edge(std::vector<SideUse>& uses) {
+    std::sort(uses.begin(), uses.end(),
+              [](const SideUse& x, const SideUse& y) { return edge_key(x.lo, x.hi) < edge_key(y.lo, y.hi); });
+}
+
+// The uses of one face's triangles that its own triangulation leaves unpaired: within a
+// face, an edge's uses pair forward with backward (a plain pair of one direction stays,
+// for the pairing across faces to close).
+std::vector<SideUse> face_leftover(const mesh::Mesh& mesh, const std::vector<std::array<std::int32_t, 3>>& topology,
+                                   const std::vector<std::int32_t>& triangles) {
     std::vector<SideUse> uses;
-    uses.reserve(3 * topology.size());
-    for (std::size_t t = 0; t < topology.size(); ++t) {
+    uses.reserve(3 * triangles.size());
+    for (std::int32_t t : triangles) {
         const std::int32_t face = mesh.has_face_ids() ? mesh.face_ids[t] : 0;
         for (int k = 0; k < 3; ++k) {
             const std::int32_t a = topology[t][k], b = topology[t][(k + 1) % 3];
             if (a == b) continue;
-            uses.push_back({std::min(a, b), std::max(a, b), face, a < b, {static_cast<std::int32_t>(t), k}});
+            uses.push_back({std::min(a, b), std::max(a, b), face, a < b, {t, k}});
         }
     }
-    // Grouped by edge with a cheap key first; only the rare groups that are not a plain
-    // pair are put in full key order, which is all the pairing below depends on.
-    std::sort(uses.begin(), uses.end(),
-              [](const SideUse& x, const SideUse& y) { return edge_key(x.lo, x.hi) < edge_key(y.lo, y.hi); });
+    sort_by_edge(uses);
+    std::vector<SideUse> left;
+    for (std::size_t i = 0; i < uses.size();) {
+        std::size_t j = i + 1;
+        while (j < uses.size() && same_edge(uses[j], uses[i])) ++j;
+        if (j - i == 2 && uses[i].forward != uses[i + 1].forward) {
+            i = j;
+            continue;
+        }
+        if (j - i <= 2) {
+            left.insert(left.end(), uses.begin() + i, uses.begin() + j);
+        } else {
+            std::sort(uses.begin() + i, uses.begin() + j,
+                      [](const SideUse& x, const SideUse& y) { return x.key() < y.key(); });
+            pair_opposite({uses.begin() + i, uses.begin() + j}, left);
+        }
+        i = j;
+    }
+    return left;
+}
+
+// Triangles by face: runs of one face id (a model mesh appends face after face), runs
+// of the same face joined, faces in id order.
+std::vector<std::vector<std::int32_t>> triangles_by_face(const mesh::Mesh& mesh,
+                                                        std::size_t count) {
+    if (!mesh.has_face_ids()) {
+        std::vector<std::int32_t> all(count);
+        for (std::size_t t = 0; t < count; ++t) all[t] = static_cast<std::int32_t>(t);
+        return {all};
+    }
+    std::vector<std::pair<std::int32_t, std::size_t>> runs;  // (face, first triangle)
+    for (std::size_t t = 0; t < count; ++t)
+        if (t == 0 || mesh.face_ids[t] != mesh.face_ids[t - 1]) runs.emplace_back(mesh.face_ids[t], t);
+    std::stable_sort(runs.begin(), runs.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<std::vector<std::int32_t>> faces;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+        if (r == 0 || runs[r].first != runs[r - 1].first) faces.emplace_back();
+        for (std::size_t t = runs[r].second; t < count && mesh.face_ids[t] == runs[r].first; ++t)
+            faces.back().push_back(static_cast<std::int32_t>(t));
+    }
+    return faces;
+}
+
+}  // namespace
+
+std::vector<TriangleSide> unpaired_sides(const mesh::Mesh& mesh,
+                                         const std::vector<std::array<std::int32_t, 3>>& topology, int threads) {
+    // Each face's own pairs first, face by face (in parallel: most sides are inside a
+    // face); then the leftovers of all faces, edge by edge, as one would pair them all.
+    const std::vector<std::vector<std::int32_t>> faces = triangles_by_face(mesh, topology.size());
+    std::vector<std::vector<SideUse>> per_face(faces.size());
+    mesh::parallel_for(static_cast<int>(faces.size()), threads,
+                       [&](int f) { per_face[f] = face_leftover(mesh, topology, faces[f]); });
+    std::vector<SideUse> uses;
+    for (const auto& left : per_face) uses.insert(uses.end(), left.begin(), left.end());
+    mesh::parallel_sort(uses.begin(), uses.end(), threads, [](const SideUse& x, const SideUse& y) {
+        return edge_key(x.lo, x.hi) < edge_key(y.lo, y.hi);
+    });
 
     std::vector<TriangleSide> open;
     for (std::size_t i = 0; i < uses.size();) {
         std::size_t j = i + 1;
-        while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
-        if (j - i == 2) {  // the common case: two uses close the edge, whatever their directions
-            i = j;
-            continue;
-        }
-        std::sort(uses.begin() + i, uses.begin() + j,
-                  [](const SideUse& x, const SideUse& y) { return x.key() < y.key(); });
-        // Within each face, then across faces.
-        std::vector<SideUse> across;
-        for (std::size_t f = i; f < j;) {
-            std::size_t g = f + 1;
-            while (g < j && uses[g].face == uses[f].face) ++g;
-            pair_opposite({uses.begin() + f, uses.begin() + g}, across);
-            f = g;
-        }
+        while (j < uses.size() && same_edge(uses[j], uses[i])) ++j;
         std::vector<SideUse> left;
-        pair_opposite(across, left);
+        leftover_of_edge(uses.begin() + i, uses.begin() + j, left);
         // What is left runs one way (faces disagreeing in orientation): pairs of it
         // close, an odd one out stays open.
         if (left.size() % 2 == 1) open.push_back(left.back().side);

@@ -32,7 +32,10 @@ inline std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
 // Sides without a partner, sorted by (triangle, corner). `topology` holds the
 // position group of every triangle corner (position_triangles); degenerate sides
 // (both ends in one group) are skipped. Without face ids all triangles are one face.
+// The pairing within each face runs on `threads` threads; the result does not depend
+// on their number.
 std::vector<TriangleSide> unpaired_sides(const mesh::Mesh& mesh,
-                                         const std::vector<std::array<std::int32_t, 3>>& topology);
+                                         const std::vector<std::array<std::int32_t, 3>>& topology,
+                                         int threads = 1);
 
 }  // namespace trimkit::tess

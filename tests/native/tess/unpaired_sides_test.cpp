@@ -59,5 +59,61 @@ TEST(UnpairedSides, FacesOfOppositeOrientationStillPair) {
     EXPECT_EQ(unpaired_sides(m, m.triangles).size(), 4u);
 }
 
+
+// An n x n grid of unit squares on z = 0 cut into four faces by quadrant, each face
+// with its own vertices (as a model mesh has them), its triangles appended in two runs
+// out of face order (close_t_junctions appends split triangles at the end), and one
+// sliver against a chord between two faces. Derived: the open sides are the grid's 4n
+// outer sides and the sliver's one unpaired use of the chord.
+TEST(UnpairedSides, FacesPairedApartGiveTheSameSidesOnAnyThreads) {
+    const int n = 40, half = n / 2;
+    mesh::Mesh m;
+    std::vector<std::pair<std::array<std::int32_t, 3>, std::int32_t>> late;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const std::int32_t face = (i >= half) * 2 + (j >= half);
+            const auto v = [&](int x, int y) {
+                m.positions.emplace_back(x, y, 0);
+                return static_cast<std::int32_t>(m.positions.size() - 1);
+            };
+            const std::int32_t a = v(i, j), b = v(i + 1, j), c = v(i + 1, j + 1), d = v(i, j + 1);
+            const std::array<std::int32_t, 3> first{a, b, c}, second{a, c, d};
+            m.triangles.push_back(first);
+            m.face_ids.push_back(face);
+            if (face == 1 && j % 2 == 0) {
+                late.emplace_back(second, face);
+            } else {
+                m.triangles.push_back(second);
+                m.face_ids.push_back(face);
+            }
+        }
+    for (const auto& [triangle, face] : late) {
+        m.triangles.push_back(triangle);
+        m.face_ids.push_back(face);
+    }
+    // The sliver: face 0's chord from (half, 0) to (half, 1) repeated by a flat
+    // triangle through a point just off it.
+    const auto at = [&](double x, double y) {
+        m.positions.emplace_back(x, y, 0);
+        return static_cast<std::int32_t>(m.positions.size() - 1);
+    };
+    m.triangles.push_back({at(half, 1), at(half, 0), at(half - 1e-3, 0.5)});
+    m.face_ids.push_back(0);
+
+    const auto topology = position_triangles(m, position_groups(m));
+    const std::vector<TriangleSide> one = unpaired_sides(m, topology, 1);
+    const std::vector<TriangleSide> two = unpaired_sides(m, topology, 2);
+    // The sliver's three sides: the chord (used three times, once left over) and its
+    // two short sides, which nothing else uses.
+    EXPECT_EQ(one.size(), static_cast<std::size_t>(4 * n + 3));
+    ASSERT_EQ(two.size(), one.size());
+    for (std::size_t k = 0; k < one.size(); ++k) {
+        EXPECT_EQ(one[k].triangle, two[k].triangle);
+        EXPECT_EQ(one[k].corner, two[k].corner);
+    }
+    EXPECT_EQ(count_position_open_edges(m, 2), one.size());
+    EXPECT_EQ(position_groups(m, false, 2), position_groups(m, false, 1));
+}
+
 }  // namespace
 }  // namespace trimkit::tess
