@@ -250,9 +250,11 @@ class EXPORT_SCENE_OT_trimkit_tkz(bpy.types.Operator, ExportHelper):
         result = run_with_progress(self, context, work)
         if result is None:
             return {'CANCELLED'}
-        source, packed, done, faces = result
+        stored, packed, done, faces = result
+        tkz = props.source is not None and props.source.get(stored_source.FORM_KEY) == "tkz"
+        form = "a lossless .tkz" if tkz else "its source file"
         self.report({'INFO'}, f"{self.filepath}: {done} of {faces} faces compressed, {packed} bytes "
-                              f"(the stored file: {source})")
+                              f"(the .blend stores the model as {form}, {stored} bytes before zlib)")
         return {'FINISHED'}
 
 

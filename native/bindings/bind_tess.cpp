@@ -193,9 +193,10 @@ void bind_tess(py::module_& m) {
           "face ids must be among them. ValueError for an invalid mesh or face list.");
     m.def("corner_attributes", &corner_attributes, py::arg("model"), py::arg("mesh"),
           "Per-corner (u,v) in each triangle's own face, (m, 3, 2), and unit normals, (m, 3, 3).");
-    m.def("model_diagonal", &tess::model_diagonal, py::arg("model"),
+    m.def("model_diagonal", &tess::model_diagonal, py::arg("model"), py::arg("threads") = 0,
           py::call_guard<py::gil_scoped_release>(),
-          "Diagonal of the trimmed faces' bounding box: what a relative tolerance is a fraction of.");
+          "Diagonal of the trimmed faces' bounding box: what a relative tolerance is a fraction of "
+          "(faces sampled on `threads` threads, 0: all cores; the same result on any).");
 }
 
 }  // namespace trimkit::bindings

@@ -81,7 +81,7 @@ int run_mesh(const std::vector<std::string>& argv) {
     const double read_seconds = seconds_since(start);
     options.tolerance = tolerance;
     if (args.flag("--relative")) {
-        const double diagonal = tess::model_diagonal(model);
+        const double diagonal = tess::model_diagonal(model, options.threads);
         if (!(diagonal > 0.0)) throw UsageError(path + ": --relative needs a model with faces");
         options.tolerance = tolerance * diagonal;
     }

@@ -65,20 +65,25 @@ int trace_intervals(const geom::NurbsCurve2d& c) {
     return std::clamp(kPointsPerSpan * spans, kTraceIntervals, kMaxTraceIntervals);
 }
 
-std::vector<Trace> free_traces(const geom::Model& model, double distance) {
+std::vector<Trace> free_traces(const geom::Model& model, double distance, int threads) {
     std::vector<Trace> traces;
     for (size_t f = 0; f < model.faces.size(); ++f)
         for (size_t l = 0; l < model.faces[f].loops.size(); ++l)
-            for (size_t c = 0; c < model.faces[f].loops[l].coedges.size(); ++c) {
-                const geom::Coedge& coedge = model.faces[f].loops[l].coedges[c];
-                if (coedge.edge >= 0) continue;
-                const int intervals = trace_intervals(coedge.curve);
-                Trace trace{static_cast<int>(f), static_cast<int>(l), static_cast<int>(c),
-                            trace_points(model.faces[f], coedge, intervals), 0.0};
-                for (int k = 0; k < intervals; ++k)
-                    trace.length += (trace.points[k + 1] - trace.points[k]).norm();
-                if (trace.length > 2.0 * distance && std::isfinite(trace.length)) traces.push_back(std::move(trace));
-            }
+            for (size_t c = 0; c < model.faces[f].loops[l].coedges.size(); ++c)
+                if (model.faces[f].loops[l].coedges[c].edge < 0)
+                    traces.push_back({static_cast<int>(f), static_cast<int>(l), static_cast<int>(c), {}, 0.0});
+    // The points (each a surface evaluation) on the threads.
+    mesh::parallel_for(static_cast<int>(traces.size()), threads, [&](int i) {
+        Trace& trace = traces[i];
+        const geom::Face& face = model.faces[trace.face];
+        const geom::Coedge& coedge = face.loops[trace.loop].coedges[trace.coedge];
+        const int intervals = trace_intervals(coedge.curve);
+        trace.points = trace_points(face, coedge, intervals);
+        for (int k = 0; k < intervals; ++k) trace.length += (trace.points[k + 1] - trace.points[k]).norm();
+    });
+    traces.erase(std::remove_if(traces.begin(), traces.end(),
+                                [&](const Trace& t) { return !(t.length > 2.0 * distance && std::isfinite(t.length)); }),
+                 traces.end());
     return traces;
 }
 
@@ -269,14 +274,16 @@ Eigen::Vector3d trace_at(const geom::Model& model, const Trace& trace, double t)
 // For each trace, the parameters where other traces' ends lie on its interior (more
 // than 2 x distance from its own ends in 3D), sorted.
 std::vector<std::vector<double>> split_parameters(const geom::Model& model, const std::vector<Trace>& traces,
-                                                  double distance) {
+                                                  double distance, int threads) {
     std::vector<double> lengths;
     for (const Trace& trace : traces) lengths.push_back(trace.length);
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
     const double spacing = std::max(4.0 * distance, lengths[lengths.size() / 2] / kTraceIntervals);
     const TraceGrid grid(model, traces, spacing);
-    std::vector<std::vector<double>> splits(traces.size());
-    for (std::size_t j = 0; j < traces.size(); ++j)
+    // Per trace j, the (trace, parameter) splits its ends make, on the threads; then
+    // gathered in j's order, each trace's first kMaxSplits kept.
+    std::vector<std::vector<std::pair<int, double>>> found(traces.size());
+    mesh::parallel_for(static_cast<int>(traces.size()), threads, [&](int j) {
         for (const Eigen::Vector3d& end : {traces[j].points.front(), traces[j].points.back()}) {
             std::vector<std::pair<Lookup, Eigen::Vector3d>> near = grid.near(end);
             std::sort(near.begin(), near.end(), [&](const auto& x, const auto& y) {
@@ -285,7 +292,7 @@ std::vector<std::vector<double>> split_parameters(const geom::Model& model, cons
             std::vector<int> seen;
             for (const auto& [sample, position] : near) {
                 const Trace& on = traces[sample.trace];
-                if (sample.trace == static_cast<int>(j) ||
+                if (sample.trace == j ||
                     std::find(seen.begin(), seen.end(), sample.trace) != seen.end())
                     continue;
                 seen.push_back(sample.trace);  // each trace once: its nearest sample
@@ -295,10 +302,14 @@ std::vector<std::vector<double>> split_parameters(const geom::Model& model, cons
                 const auto [t0, t1] = coedge.curve.domain();
                 const double step = 2.0 * spacing / on.length * (t1 - t0);
                 const double t = nearest_parameter(model, on, end, std::max(t0, sample.t - step), std::min(t1, sample.t + step));
-                if ((trace_at(model, on, t) - end).norm() <= distance && splits[sample.trace].size() < kMaxSplits)
-                    splits[sample.trace].push_back(t);
+                if ((trace_at(model, on, t) - end).norm() <= distance) found[j].emplace_back(sample.trace, t);
             }
         }
+    });
+    std::vector<std::vector<double>> splits(traces.size());
+    for (const auto& list : found)
+        for (const auto& [trace, t] : list)
+            if (splits[trace].size() < kMaxSplits) splits[trace].push_back(t);
     for (std::vector<double>& ts : splits) std::sort(ts.begin(), ts.end());
     return splits;
 }
@@ -345,11 +356,11 @@ SewingReport sew_free_coedges(geom::Model& model, double distance, int threads) 
     SewingReport report;
     if (!(distance > 0.0) || !std::isfinite(distance)) return report;
     {
-        const std::vector<Trace> whole = free_traces(model, distance);
+        const std::vector<Trace> whole = free_traces(model, distance, threads);
         if (whole.empty()) return report;
-        report.splits = apply_splits(model, whole, split_parameters(model, whole, distance), distance);
+        report.splits = apply_splits(model, whole, split_parameters(model, whole, distance, threads), distance);
     }
-    const std::vector<Trace> traces = free_traces(model, distance);
+    const std::vector<Trace> traces = free_traces(model, distance, threads);
     std::vector<Candidate> found = candidates(model, traces, distance, threads);
     std::stable_sort(found.begin(), found.end(),
                      [](const Candidate& x, const Candidate& y) { return x.gap < y.gap; });

@@ -797,45 +797,60 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
     return tessellate_sewn(model, options);
 }
 
-double model_diagonal(const geom::Model& model) {
-    if (!model.instances.empty()) return model_diagonal(geom::flatten_instances(model));
+namespace {
+
+// Points of `face` sampled along its trim loops and on a grid inside them (even-odd
+// rule in (u,v)), the box around them.
+Eigen::AlignedBox3d sampled_face_box(const geom::Face& face) {
     Eigen::AlignedBox3d box;
-    for (const geom::Face& face : model.faces) {
-        const geom::NurbsSurface& S = face.surface;
-        std::vector<std::vector<Eigen::Vector2d>> polygons;
-        Eigen::AlignedBox2d uv_box;
-        for (const geom::Loop& loop : face.loops) {
-            std::vector<Eigen::Vector2d> polygon;
-            for (const geom::Coedge& coedge : loop.coedges) {
-                const auto [t0, t1] = coedge.curve.domain();
-                for (int k = 0; k < kDiagonalCurveSamples; ++k) {
-                    const Eigen::Vector2d uv = coedge.curve.evaluate(t0 + (t1 - t0) * k / kDiagonalCurveSamples);
-                    if (!uv.allFinite()) continue;
-                    polygon.push_back(uv);
-                    uv_box.extend(uv);
-                    const Eigen::Vector3d p = S.evaluate(uv.x(), uv.y());
-                    if (p.allFinite()) box.extend(p);
-                }
-            }
-            polygons.push_back(std::move(polygon));
-        }
-        if (uv_box.isEmpty()) continue;
-        for (int i = 0; i <= kDiagonalGridSamples; ++i)
-            for (int j = 0; j <= kDiagonalGridSamples; ++j) {
-                const Eigen::Vector2d uv =
-                    uv_box.min() + uv_box.sizes().cwiseProduct(Eigen::Vector2d(i, j) / kDiagonalGridSamples);
-                bool in = false;
-                for (const auto& poly : polygons)
-                    for (size_t a = 0, n = poly.size(), b = n - 1; a < n; b = a++)
-                        if ((poly[a].y() > uv.y()) != (poly[b].y() > uv.y()) &&
-                            uv.x() < poly[a].x() + (uv.y() - poly[a].y()) * (poly[b].x() - poly[a].x()) /
-                                                       (poly[b].y() - poly[a].y()))
-                            in = !in;
-                if (!in) continue;
+    const geom::NurbsSurface& S = face.surface;
+    std::vector<std::vector<Eigen::Vector2d>> polygons;
+    Eigen::AlignedBox2d uv_box;
+    for (const geom::Loop& loop : face.loops) {
+        std::vector<Eigen::Vector2d> polygon;
+        for (const geom::Coedge& coedge : loop.coedges) {
+            const auto [t0, t1] = coedge.curve.domain();
+            for (int k = 0; k < kDiagonalCurveSamples; ++k) {
+                const Eigen::Vector2d uv = coedge.curve.evaluate(t0 + (t1 - t0) * k / kDiagonalCurveSamples);
+                if (!uv.allFinite()) continue;
+                polygon.push_back(uv);
+                uv_box.extend(uv);
                 const Eigen::Vector3d p = S.evaluate(uv.x(), uv.y());
                 if (p.allFinite()) box.extend(p);
             }
+        }
+        polygons.push_back(std::move(polygon));
     }
+    if (uv_box.isEmpty()) return box;
+    for (int i = 0; i <= kDiagonalGridSamples; ++i)
+        for (int j = 0; j <= kDiagonalGridSamples; ++j) {
+            const Eigen::Vector2d uv =
+                uv_box.min() + uv_box.sizes().cwiseProduct(Eigen::Vector2d(i, j) / kDiagonalGridSamples);
+            bool in = false;
+            for (const auto& poly : polygons)
+                for (size_t a = 0, n = poly.size(), b = n - 1; a < n; b = a++)
+                    if ((poly[a].y() > uv.y()) != (poly[b].y() > uv.y()) &&
+                        uv.x() < poly[a].x() + (uv.y() - poly[a].y()) * (poly[b].x() - poly[a].x()) /
+                                                   (poly[b].y() - poly[a].y()))
+                        in = !in;
+            if (!in) continue;
+            const Eigen::Vector3d p = S.evaluate(uv.x(), uv.y());
+            if (p.allFinite()) box.extend(p);
+        }
+    return box;
+}
+
+}  // namespace
+
+double model_diagonal(const geom::Model& model, int threads) {
+    if (!model.instances.empty()) return model_diagonal(geom::flatten_instances(model), threads);
+    // Faces on the threads; a union of boxes is the same in any order.
+    std::vector<Eigen::AlignedBox3d> boxes(model.faces.size());
+    mesh::parallel_for(static_cast<int>(model.faces.size()), mesh::resolve_threads(threads),
+                       [&](int f) { boxes[f] = sampled_face_box(model.faces[f]); });
+    Eigen::AlignedBox3d box;
+    for (const Eigen::AlignedBox3d& b : boxes)
+        if (!b.isEmpty()) box.extend(b);
     return box.isEmpty() ? 0.0 : box.diagonal().norm();
 }
 

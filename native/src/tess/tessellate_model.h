@@ -76,7 +76,8 @@ TessellationResult tessellate_model(const geom::Model& model, const Tessellation
 // Diagonal of the tight bounding box of the trimmed faces, from points on them
 // (trim curves and (u,v) grid samples inside the trim loops), not control points:
 // the length a --relative tolerance is a fraction of, with the model's instances
-// placed (the whole assembly). 0 for a model without faces.
-double model_diagonal(const geom::Model& model);
+// placed (the whole assembly). 0 for a model without faces. Faces are sampled on
+// `threads` threads (0: as many as the machine has); the result does not depend on it.
+double model_diagonal(const geom::Model& model, int threads = 1);
 
 }  // namespace trimkit::tess
