@@ -204,6 +204,39 @@ TEST(SewFreeCoedges, SplitsACurveWhereAnotherFacesTraceEndsOnIt) {
     }
 }
 
+// Loose faces of a brick wall (rows of unit-high bricks, every other row shifted by a
+// half brick, so each row's joints end on the next row's brick sides): the sewing
+// splits and pairs the same coedges whatever the number of threads.
+TEST(SewFreeCoedges, SameSewingOnAnyNumberOfThreads) {
+    geom::Model wall;
+    for (int row = 0; row < 4; ++row)
+        for (int brick = 0; brick < 4; ++brick) {
+            const double x0 = brick * 2.0 - (row % 2 ? 1.0 : 0.0);
+            geom::Face face;
+            face.surface = plane(x0, x0 + 2.0, row, row + 1.0);
+            face.loops.push_back(geom::natural_boundary_loop(face.surface));
+            wall.faces.push_back(face);
+        }
+    geom::Model one = wall, two = wall;
+    const SewingReport a = sew_free_coedges(one, 1e-3, 1), b = sew_free_coedges(two, 1e-3, 2);
+    // Derived: the rows overlap on [0, 7] (row 0 spans [0, 8], row 1 [-1, 7]), cut at every
+    // integer there into 7 unit pieces on each side; each row has 3 joints between its
+    // bricks: 3 x 7 + 4 x 3 pairs (the end pieces [-1, 0] and [7, 8] have no partner).
+    EXPECT_EQ(a.pairs, 33);
+    EXPECT_EQ(b.pairs, a.pairs);
+    EXPECT_EQ(b.splits, a.splits);
+    ASSERT_EQ(one.edges.size(), two.edges.size());
+    for (std::size_t f = 0; f < one.faces.size(); ++f) {
+        const auto& x = one.faces[f].loops[0].coedges;
+        const auto& y = two.faces[f].loops[0].coedges;
+        ASSERT_EQ(x.size(), y.size()) << "face " << f;
+        for (std::size_t c = 0; c < x.size(); ++c) {
+            EXPECT_EQ(x[c].edge, y[c].edge) << "face " << f << ", coedge " << c;
+            EXPECT_EQ(x[c].edge_reversed, y[c].edge_reversed);
+        }
+    }
+}
+
 // The unit circle as a rational quadratic NURBS in (u, v) starting at angle `start`,
 // counter-clockwise or clockwise.
 geom::NurbsCurve2d unit_circle(double start, bool counter_clockwise) {
