@@ -768,8 +768,11 @@ def test_part_box_centre_origins_keep_the_world_positions_of_an_assembly():
 
 TBP_SLOPE = math.sqrt(1 + 0.1 ** 2 + 0.05 ** 2)
 # The tilted square over [-2, 2]^2 (2 patches) trimmed by Blender's default UV sphere made
-# PN triangles (960 patches), levels 2, lod 3, keep outside: welded, slivers dropped.
-TBP_TRIM_TRIANGLES = 1539
+# PN triangles (960 patches), levels 2, lod 3, keep outside: welded, slivers dropped. A
+# regression pin, not a derived figure: 1539 until the domain arrangement's faces were
+# triangulated by mesh/triangulate_polygon.h, which leaves out the vertices where the
+# arrangement runs straight through (one fewer triangle here).
+TBP_TRIM_TRIANGLES = 1538
 
 
 def tbp_flat(a, b, c, n=3):

@@ -143,6 +143,25 @@ public:
     }
 };
 
+// A vertex where the arrangement goes straight through (two edges, on one line) is a
+// corner of no face: left out of the triangulation, in every face that has it, so the
+// faces stay conforming (a vertex where three or more edges meet stays, straight or not).
+constexpr double kStraightTurn = 1e-12;  // |cross| in local coordinates (legs of length 1)
+
+std::vector<int> without_straight_vertices(const std::vector<Eigen::Vector2d>& pts,
+                                           const std::vector<std::vector<int>>& adjacency,
+                                           const std::vector<int>& poly) {
+    std::vector<int> kept;
+    for (int v : poly) {
+        const auto& nb = adjacency[v];
+        const bool straight = v > 2 && nb.size() == 2 &&
+                              std::abs(cross2(pts[v] - pts[nb[0]], pts[nb[1]] - pts[v])) <= kStraightTurn &&
+                              (pts[v] - pts[nb[0]]).dot(pts[nb[1]] - pts[v]) > 0.0;
+        if (!straight) kept.push_back(v);
+    }
+    return kept.size() >= 3 ? kept : poly;
+}
+
 }  // namespace
 
 TriangleArrangement arrange_triangle(const std::vector<std::array<Eigen::Vector2d, 2>>& cuts) {
@@ -188,7 +207,7 @@ TriangleArrangement arrange_triangle(const std::vector<std::array<Eigen::Vector2
             if (area <= 0) continue;  // the outer boundary, traversed clockwise
             ArrangementFace f;
             f.polygon = poly;
-            f.triangles = mesh::triangulate_polygon(g.pts, poly);
+            f.triangles = mesh::triangulate_polygon(g.pts, without_straight_vertices(g.pts, adj0, poly));
             double best = -1;
             for (const auto& tri : f.triangles) {
                 const double ta = cross2(g.pts[tri[1]] - g.pts[tri[0]], g.pts[tri[2]] - g.pts[tri[0]]);

@@ -65,5 +65,31 @@ TEST(ArrangeTriangle, IslandAndDanglingCut) {
     EXPECT_NEAR(square_area, 0.04, 1e-14);
 }
 
+// A cut given as two collinear pieces runs straight through their common point: no
+// triangle has it as a corner (3 triangles: the corner (0,0) cut off, and the
+// quadrilateral (a, (1,0), (0,1), b) left). A third cut
+// ending there makes it a junction, a corner of every face around it.
+TEST(ArrangeTriangle, StraightThroughVertexIsNoCornerAJunctionIs) {
+    const Eigen::Vector2d a(0.6, 0.0), m(0.3, 0.3), b(0.0, 0.6);  // m on the chord from a to b
+    const auto uses_m = [&](const TriangleArrangement& arr) {
+        int count = 0;
+        for (const auto& f : arr.faces)
+            for (const auto& t : f.triangles)
+                for (int v : t) count += (arr.points[v] - m).norm() < 1e-12;
+        return count;
+    };
+    const TriangleArrangement straight = arrange_triangle({Cut{a, m}, Cut{m, b}});
+    ASSERT_EQ(straight.faces.size(), 2u);
+    EXPECT_NEAR(total(straight), 0.5, 1e-14);
+    EXPECT_EQ(uses_m(straight), 0);
+    std::size_t triangles = 0;
+    for (const auto& f : straight.faces) triangles += f.triangles.size();
+    EXPECT_EQ(triangles, 3u);
+    const TriangleArrangement junction = arrange_triangle({Cut{a, m}, Cut{m, b}, Cut{m, Eigen::Vector2d(0.5, 0.5)}});
+    ASSERT_EQ(junction.faces.size(), 3u);
+    EXPECT_NEAR(total(junction), 0.5, 1e-14);
+    EXPECT_GE(uses_m(junction), 3);  // a corner of the triangles on every side
+}
+
 }  // namespace
 }  // namespace trimkit::tbp
