@@ -55,6 +55,8 @@ DomainClamp plan_domain_clamp(const std::vector<double>& U, int p, const char* o
     clamp.knots.assign(p + 1, a);
     clamp.knots.insert(clamp.knots.end(), knots.begin() + la + 1, knots.begin() + fb);
     clamp.knots.insert(clamp.knots.end(), p + 1, b);
+    for (double x : clamp.knots)
+        if (clamp.breaks.empty() || x != clamp.breaks.back()) clamp.breaks.push_back(x);
     return clamp;
 }
 

@@ -64,38 +64,28 @@ std::vector<H> insert_knot(const KnotInsertion& plan, const std::vector<H>& P) {
     return Q;
 }
 
-// A row split into Bézier pieces: breaks[0] < .. < breaks[n] are the distinct knots of
-// the domain; piece q has the p + 1 points at [q * (p + 1), (q + 1) * (p + 1)).
-template <class H>
-struct BezierPieces {
-    std::vector<double> breaks;
-    std::vector<H> points;
-};
-
 // The insertions that clamp the domain ends of U (each end knot raised to
 // multiplicity p; none when already clamped), and the knot index range of the clamped
 // domain: the row of points [first, end) has knots p+1 x a, the interior, p+1 x b.
 struct DomainClamp {
     std::vector<KnotInsertion> insertions;
-    std::vector<double> knots;  // p + 1 equal knots at each end
+    std::vector<double> knots;   // p + 1 equal knots at each end
+    std::vector<double> breaks;  // its distinct knots, breaks[0] < .. < breaks[n]: n pieces
     int first = 0, end = 0;
 };
 DomainClamp plan_domain_clamp(const std::vector<double>& U, int p, const char* owner);
 
 // [PT] Algorithm A5.6 on the clamped row (ends clamped first when they are not):
-// one Bézier piece per non-empty knot span, O(n p^2) for n points.
+// one Bézier piece per non-empty knot span (between clamp.breaks[q] and [q + 1]), its
+// p + 1 points at [q * (p + 1), (q + 1) * (p + 1)); O(n p^2) for n points.
 template <class H>
-BezierPieces<H> bezier_pieces(const DomainClamp& clamp, int p, std::vector<H> P) {
+std::vector<H> bezier_pieces(const DomainClamp& clamp, int p, std::vector<H> P) {
     for (const KnotInsertion& plan : clamp.insertions) P = insert_knot(plan, P);
     const std::vector<double>& U = clamp.knots;
     const int m = static_cast<int>(U.size()) - 1;
-    BezierPieces<H> out;
-    out.breaks.push_back(U[p]);
-    for (int i = p + 1; i <= m - p; ++i)
-        if (U[i] != out.breaks.back()) out.breaks.push_back(U[i]);
-    const size_t pieces = out.breaks.size() - 1, width = static_cast<size_t>(p) + 1;
-    out.points.resize((pieces + 1) * width);
-    auto Q = [&](size_t piece, int i) -> H& { return out.points[piece * width + i]; };
+    const size_t pieces = clamp.breaks.size() - 1, width = static_cast<size_t>(p) + 1;
+    std::vector<H> out((pieces + 1) * width);
+    auto Q = [&](size_t piece, int i) -> H& { return out[piece * width + i]; };
     for (int i = 0; i <= p; ++i) Q(0, i) = P[clamp.first + i];
     std::vector<double> alphas(width);
     int a = p, b = p + 1;
@@ -123,7 +113,7 @@ BezierPieces<H> bezier_pieces(const DomainClamp& clamp, int p, std::vector<H> P)
             ++b;
         }
     }
-    out.points.resize(pieces * width);
+    out.resize(pieces * width);
     return out;
 }
 

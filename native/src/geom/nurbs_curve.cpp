@@ -201,15 +201,14 @@ NurbsCurve<Dim> NurbsCurve<Dim>::sub_curve(double a, double b) const {
 template <int Dim>
 std::vector<NurbsCurve<Dim>> NurbsCurve<Dim>::bezier_segments() const {
     const DomainClamp clamp = plan_domain_clamp(U_, p_, "NurbsCurve::bezier_segments");
-    const BezierPieces<HomogeneousPoint<Dim>> pieces = bezier_pieces(clamp, p_, homogeneous_points());
+    const std::vector<HomogeneousPoint<Dim>> pieces = bezier_pieces(clamp, p_, homogeneous_points());
+    const std::vector<double>& breaks = clamp.breaks;
     const size_t width = static_cast<size_t>(p_) + 1;
     std::vector<NurbsCurve> segments;
-    segments.reserve(pieces.breaks.size() - 1);
-    for (size_t q = 0; q + 1 < pieces.breaks.size(); ++q) {
-        std::vector<HomogeneousPoint<Dim>> H(pieces.points.begin() + q * width,
-                                             pieces.points.begin() + (q + 1) * width);
-        segments.push_back(from_homogeneous(p_, bezier_knots(p_, pieces.breaks[q], pieces.breaks[q + 1]),
-                                            H, rational_));
+    segments.reserve(breaks.size() - 1);
+    for (size_t q = 0; q + 1 < breaks.size(); ++q) {
+        std::vector<HomogeneousPoint<Dim>> H(pieces.begin() + q * width, pieces.begin() + (q + 1) * width);
+        segments.push_back(from_homogeneous(p_, bezier_knots(p_, breaks[q], breaks[q + 1]), H, rational_));
     }
     return segments;
 }

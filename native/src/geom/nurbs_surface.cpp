@@ -314,23 +314,18 @@ std::vector<NurbsSurface> NurbsSurface::bezier_patches() const {
     const char* owner = "NurbsSurface::bezier_patches";
     const DomainClamp clamp_u = plan_domain_clamp(U_, pu_, owner), clamp_v = plan_domain_clamp(V_, pv_, owner);
     const size_t wu = static_cast<size_t>(pu_) + 1, wv = static_cast<size_t>(pv_) + 1;
+    const std::vector<double>& bu = clamp_u.breaks;
+    const std::vector<double>& bv = clamp_v.breaks;
     // pieces_u[j]: column j cut at the u breaks (rows piece-major).
-    std::vector<double> bu, bv;
     std::vector<std::vector<Eigen::Vector4d>> pieces_u(nv_);
-    for (int j = 0; j < nv_; ++j) {
-        BezierPieces<Eigen::Vector4d> cut = bezier_pieces(clamp_u, pu_, homogeneous_column(j));
-        pieces_u[j] = std::move(cut.points);
-        bu = std::move(cut.breaks);
-    }
+    for (int j = 0; j < nv_; ++j) pieces_u[j] = bezier_pieces(clamp_u, pu_, homogeneous_column(j));
     const size_t rows = pieces_u[0].size();
     // grid[row][v piece point]: each row of the u-cut grid cut at the v breaks.
     std::vector<std::vector<Eigen::Vector4d>> grid(rows);
     for (size_t row = 0; row < rows; ++row) {
         std::vector<Eigen::Vector4d> line(nv_);
         for (int j = 0; j < nv_; ++j) line[j] = pieces_u[j][row];
-        BezierPieces<Eigen::Vector4d> cut = bezier_pieces(clamp_v, pv_, std::move(line));
-        grid[row] = std::move(cut.points);
-        bv = std::move(cut.breaks);
+        grid[row] = bezier_pieces(clamp_v, pv_, std::move(line));
     }
     std::vector<NurbsSurface> patches;
     patches.reserve((bu.size() - 1) * (bv.size() - 1));

@@ -16,6 +16,21 @@ struct SideUse {
     auto key() const { return std::make_tuple(lo, hi, face, forward, side.triangle, side.corner); }
 };
 
+bool by_key(const SideUse& x, const SideUse& y) { return x.key() < y.key(); }
+bool by_edge(const SideUse& x, const SideUse& y) { return edge_key(x.lo, x.hi) < edge_key(y.lo, y.hi); }
+bool same_edge(const SideUse& x, const SideUse& y) { return x.lo == y.lo && x.hi == y.hi; }
+
+// Calls edge(begin, end) for each run of uses of one edge in `uses` (sorted by_edge).
+template <class Edge>
+void for_each_edge(std::vector<SideUse>& uses, const Edge& edge) {
+    for (auto i = uses.begin(); i != uses.end();) {
+        auto j = i + 1;
+        while (j != uses.end() && same_edge(*j, *i)) ++j;
+        edge(i, j);
+        i = j;
+    }
+}
+
 // Pairs forward with backward uses among `uses` (in order); appends the rest to `left`.
 void pair_opposite(const std::vector<SideUse>& uses, std::vector<SideUse>& left) {
     std::vector<SideUse> forward, backward;
@@ -31,7 +46,7 @@ void pair_opposite(const std::vector<SideUse>& uses, std::vector<SideUse>& left)
 void leftover_of_edge(std::vector<SideUse>::iterator begin, std::vector<SideUse>::iterator end,
                       std::vector<SideUse>& left) {
     if (end - begin == 2) return;
-    std::sort(begin, end, [](const SideUse& x, const SideUse& y) { return x.key() < y.key(); });
+    std::sort(begin, end, by_key);
     std::vector<SideUse> across;
     for (auto f = begin; f != end;) {
         auto g = f + 1;
@@ -40,13 +55,6 @@ void leftover_of_edge(std::vector<SideUse>::iterator begin, std::vector<SideUse>
         f = g;
     }
     pair_opposite(across, left);
-}
-
-bool same_edge(const SideUse& x, const SideUse& y) { return x.lo == y.lo && x.hi == y.hi; }
-
-void sort_by_edge(std::vector<SideUse>& uses) {
-    std::sort(uses.begin(), uses.end(),
-              [](const SideUse& x, const SideUse& y) { return edge_key(x.lo, x.hi) < edge_key(y.lo, y.hi); });
 }
 
 // The uses of one face's triangles that its own triangulation leaves unpaired: within a
@@ -64,24 +72,13 @@ std::vector<SideUse> face_leftover(const mesh::Mesh& mesh, const std::vector<std
             uses.push_back({std::min(a, b), std::max(a, b), face, a < b, {t, k}});
         }
     }
-    sort_by_edge(uses);
+    std::sort(uses.begin(), uses.end(), by_edge);
     std::vector<SideUse> left;
-    for (std::size_t i = 0; i < uses.size();) {
-        std::size_t j = i + 1;
-        while (j < uses.size() && same_edge(uses[j], uses[i])) ++j;
-        if (j - i == 2 && uses[i].forward != uses[i + 1].forward) {
-            i = j;
-            continue;
-        }
-        if (j - i <= 2) {
-            left.insert(left.end(), uses.begin() + i, uses.begin() + j);
-        } else {
-            std::sort(uses.begin() + i, uses.begin() + j,
-                      [](const SideUse& x, const SideUse& y) { return x.key() < y.key(); });
-            pair_opposite({uses.begin() + i, uses.begin() + j}, left);
-        }
-        i = j;
-    }
+    for_each_edge(uses, [&](auto begin, auto end) {
+        if (end - begin == 2 && begin->forward != (begin + 1)->forward) return;
+        if (end - begin > 2) std::sort(begin, end, by_key);
+        pair_opposite({begin, end}, left);
+    });
     return left;
 }
 
@@ -120,21 +117,16 @@ std::vector<TriangleSide> unpaired_sides(const mesh::Mesh& mesh,
                        [&](int f) { per_face[f] = face_leftover(mesh, topology, faces[f]); });
     std::vector<SideUse> uses;
     for (const auto& left : per_face) uses.insert(uses.end(), left.begin(), left.end());
-    mesh::parallel_sort(uses.begin(), uses.end(), threads, [](const SideUse& x, const SideUse& y) {
-        return edge_key(x.lo, x.hi) < edge_key(y.lo, y.hi);
-    });
+    mesh::parallel_sort(uses.begin(), uses.end(), threads, by_edge);
 
     std::vector<TriangleSide> open;
-    for (std::size_t i = 0; i < uses.size();) {
-        std::size_t j = i + 1;
-        while (j < uses.size() && same_edge(uses[j], uses[i])) ++j;
+    for_each_edge(uses, [&](auto begin, auto end) {
         std::vector<SideUse> left;
-        leftover_of_edge(uses.begin() + i, uses.begin() + j, left);
+        leftover_of_edge(begin, end, left);
         // What is left runs one way (faces disagreeing in orientation): pairs of it
         // close, an odd one out stays open.
         if (left.size() % 2 == 1) open.push_back(left.back().side);
-        i = j;
-    }
+    });
     std::sort(open.begin(), open.end(), [](const TriangleSide& x, const TriangleSide& y) {
         return std::tie(x.triangle, x.corner) < std::tie(y.triangle, y.corner);
     });

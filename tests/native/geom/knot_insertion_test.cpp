@@ -70,16 +70,16 @@ const std::vector<Case>& cases() {
 TEST(KnotInsertion, BezierPiecesEqualTheSpline) {
     for (const Case& c : cases()) {
         const Row P = random_row(c.U.size() - c.p - 1, 7);
-        const BezierPieces<Eigen::Vector2d> pieces =
-            bezier_pieces(plan_domain_clamp(c.U, c.p, "test"), c.p, P);
-        ASSERT_EQ(pieces.breaks, c.breaks);
-        ASSERT_EQ(pieces.points.size(), (c.breaks.size() - 1) * (c.p + 1));
+        const DomainClamp clamp = plan_domain_clamp(c.U, c.p, "test");
+        const Row pieces = bezier_pieces(clamp, c.p, P);
+        ASSERT_EQ(clamp.breaks, c.breaks);
+        ASSERT_EQ(pieces.size(), (c.breaks.size() - 1) * (c.p + 1));
         for (size_t q = 0; q + 1 < c.breaks.size(); ++q) {
             const double a = c.breaks[q], b = c.breaks[q + 1];
             // Inside the span (the spline at a break of multiplicity p + 1 jumps).
             for (int i = 1; i < 20; ++i) {
                 const double u = a + (b - a) * i / 20.0;
-                EXPECT_NEAR(bezier_value(pieces.points, q * (c.p + 1), c.p, a, b, u),
+                EXPECT_NEAR(bezier_value(pieces, q * (c.p + 1), c.p, a, b, u),
                             spline_value(c.U, c.p, P, u), 1e-12)
                     << "degree " << c.p << ", piece " << q << ", u = " << u;
             }
