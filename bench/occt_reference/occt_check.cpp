@@ -6,7 +6,8 @@
 // PLY or STL) must be in model space with instances placed, in the file's length unit
 // (mm for STEP and .brep, which OCCT's STEP reader also uses; for IGES OCCT converts to
 // mm, and the mesh is scaled by the file's unit to match). All lengths printed are in the
-// mesh's unit. One JSON line:
+// mesh's unit. One JSON line per mesh (several meshes of one model share the reference,
+// built once):
 //   faces            TopExp_Explorer(shape, TopAbs_FACE) count
 //   area_occt        sum over faces of BRepGProp::SurfaceProperties (adaptive, relative
 //                    precision 1e-9); area_mesh; area_ratio
@@ -32,13 +33,13 @@
 // BRepExtrema_DistShapeShape, keeping the smaller. The 32 largest surface samples are
 // likewise refined in (u,v) or along their edge. Faces BRepMesh cannot triangulate (no
 // triangles, or an area more than 1% off) are sampled on a (u,v) grid instead.
-// Usage: occt_check MODEL MESH [-r R | --tolerance T] [--samples N] [--fine F] [--brute-force]
+// Usage: occt_check MODEL MESH [MESH ...] [-r R | --tolerance T] [--samples N] [--fine F] [--brute-force]
 //   --brute-force also measures every mesh sample with BRepExtrema_DistShapeShape against
 //   the compound of all faces and reports how the fast distances compare (a self-test).
 //   Environment: OCCT_CHECK_DEBUG=1 prints per-face figures on stderr;
 //   OCCT_CHECK_POINT=x,y,z traces the distance from that point (mesh units) and exits.
-// Exit status: 0 if both maxima <= T and |area_ratio - 1| <= 0.002, 1 otherwise, 2 on a
-// usage or read error.
+// Exit status: 0 if both maxima <= T and |area_ratio - 1| <= 0.002 for every mesh, 1
+// otherwise, 2 on a usage or read error.
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
@@ -1120,40 +1121,86 @@ std::size_t open_edges(const occt_reference::MeshFile& mesh) {
 }
 
 struct Options {
-  std::string model, mesh;
+  std::string model;
+  std::vector<std::string> meshes;
   double relative = 0.001, absolute = 0;  // absolute > 0 wins
   int samples = kDefaultSamples;
   double fine = kDefaultFine;
   bool brute_force = false;  // also re-measure every mesh sample with BRepExtrema (slow)
 };
 
+// What every mesh of one model is measured against: the model, its tolerance and the
+// reference (built once, so that several meshes of one file cost one fine mesh).
+struct Setup {
+  Model model;
+  double read_seconds = 0;
+  double D = 0, T = 0;  // OCCT units
+  std::unique_ptr<Reference> ref;
+};
+
+std::string json_start(const Options& opt, const std::string& mesh) {
+  return "{\"file\": " + json_string(base_name(opt.model)) + ", \"mesh\": " + json_string(base_name(mesh));
+}
+
+// Prints {"file", "mesh", "error"} for each mesh.
+int report_error(const Options& opt, const std::string& message) {
+  for (const std::string& mesh : opt.meshes)
+    std::printf("%s, \"error\": %s}\n", json_start(opt, mesh).c_str(), json_string(message).c_str());
+  return 2;
+}
+
+// Reads `path` and scales it to OCCT units; throws on a read error or an empty mesh.
+occt_reference::MeshFile read_scaled_mesh(const std::string& path, double s) {
+  occt_reference::MeshFile mesh = occt_reference::read_mesh_file(path);
+  if (mesh.triangles.empty()) throw std::runtime_error(path + ": no triangles");
+  for (Vec3& p : mesh.points) p = s * p;
+  return mesh;
+}
+
+int measure(const Options& opt, Setup& setup, const std::string& mesh_path, const occt_reference::MeshFile& mesh,
+            std::chrono::steady_clock::time_point start);
+
 int run(const Options& opt) {
   const auto start = std::chrono::steady_clock::now();
-  std::string json = "{\"file\": " + json_string(base_name(opt.model)) + ", \"mesh\": " + json_string(base_name(opt.mesh));
-  Model model;
-  occt_reference::MeshFile mesh;
-  double read_seconds = 0;
+  Setup setup;
   try {
-    model = read_model(opt.model);
-    read_seconds = seconds_since(start);
-    mesh = occt_reference::read_mesh_file(opt.mesh);
-    if (mesh.triangles.empty()) throw std::runtime_error(opt.mesh + ": no triangles");
+    setup.model = read_model(opt.model);
   } catch (const Standard_Failure& e) {
-    std::printf("%s, \"error\": %s}\n", json.c_str(), json_string(std::string("OCCT: ") + e.GetMessageString()).c_str());
-    return 2;
+    return report_error(opt, std::string("OCCT: ") + e.GetMessageString());
   } catch (const std::exception& e) {
-    std::printf("%s, \"error\": %s}\n", json.c_str(), json_string(e.what()).c_str());
-    return 2;
+    return report_error(opt, e.what());
   }
-  const double s = model.unit;  // OCCT length of one mesh unit
-  for (Vec3& p : mesh.points) p = s * p;
-
+  setup.read_seconds = seconds_since(start);
+  const double s = setup.model.unit;  // OCCT length of one mesh unit
   Bnd_Box box;
-  BRepBndLib::AddOptimal(model.shape, box, Standard_False, Standard_False);
-  const double D = std::sqrt(box.SquareExtent());
-  const double T = opt.absolute > 0 ? opt.absolute * s : opt.relative * D;  // OCCT units
+  BRepBndLib::AddOptimal(setup.model.shape, box, Standard_False, Standard_False);
+  setup.D = std::sqrt(box.SquareExtent());
+  setup.T = opt.absolute > 0 ? opt.absolute * s : opt.relative * setup.D;
+  setup.ref = std::make_unique<Reference>(setup.model.shape, setup.D, opt.fine * setup.T, opt.samples, setup.T);
+  int status = 0;
+  for (const std::string& path : opt.meshes) {
+    const auto mesh_start = std::chrono::steady_clock::now();
+    occt_reference::MeshFile mesh;
+    try {
+      mesh = read_scaled_mesh(path, s);
+    } catch (const std::exception& e) {
+      std::printf("%s, \"error\": %s}\n", json_start(opt, path).c_str(), json_string(e.what()).c_str());
+      status = 2;
+      continue;
+    }
+    // The first mesh's seconds include the read and the reference; the others' only their own.
+    status = std::max(status, measure(opt, setup, path, mesh, path == opt.meshes.front() ? start : mesh_start));
+    std::fflush(stdout);
+  }
+  return status;
+}
 
-  Reference ref(model.shape, D, opt.fine * T, opt.samples, T);
+// One JSON line for `mesh` against the setup's reference; 0 if it passes, 1 if not.
+int measure(const Options& opt, Setup& setup, const std::string& mesh_path, const occt_reference::MeshFile& mesh,
+            std::chrono::steady_clock::time_point start) {
+  std::string json = json_start(opt, mesh_path);
+  Reference& ref = *setup.ref;
+  const double s = setup.model.unit, D = setup.D, T = setup.T, read_seconds = setup.read_seconds;
 
   // Surface -> mesh.
   const auto s2m_start = std::chrono::steady_clock::now();
@@ -1397,11 +1444,12 @@ int main(int argc, char** argv) {
     else if (!a.empty() && a[0] == '-') bad = true;
     else positional.push_back(a);
   }
-  if (bad || positional.size() != 2 || !(opt.relative > 0) || opt.absolute < 0 || opt.samples < 1 ||
+  if (bad || positional.size() < 2 || !(opt.relative > 0) || opt.absolute < 0 || opt.samples < 1 ||
       opt.samples > 64 || !(opt.fine > 0 && opt.fine <= 1)) {
     std::fprintf(stderr,
-                 "usage: %s MODEL MESH [-r R | --tolerance T] [--samples N] [--fine F] [--brute-force]\n"
+                 "usage: %s MODEL MESH [MESH ...] [-r R | --tolerance T] [--samples N] [--fine F] [--brute-force]\n"
                  "  MODEL: .stp .step .igs .iges .brep; MESH: .obj .ply .stl in the model's units\n"
+                 "  (several meshes: one JSON line each, measured against one reference)\n"
                  "  T absolute (mesh units), R relative to the tight box diagonal (default 0.001);\n"
                  "  N barycentric subdivisions per triangle side (default %d, 1..64);\n"
                  "  F reference mesh deflection as a share of T (default %g, (0, 1])\n",
@@ -1409,7 +1457,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   opt.model = positional[0];
-  opt.mesh = positional[1];
+  opt.meshes.assign(positional.begin() + 1, positional.end());
   Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
   try {
     return run(opt);
