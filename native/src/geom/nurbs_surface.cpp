@@ -115,6 +115,13 @@ NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots
     rational_ = rational;
 }
 
+bool NurbsSurface::is_affine() const {
+    if (pu_ != 1 || pv_ != 1 || nu_ != 2 || nv_ != 2) return false;
+    if (w_[1] != w_[0] || w_[2] != w_[0] || w_[3] != w_[0]) return false;
+    const Eigen::Vector3d skew = P_[0] + P_[3] - P_[1] - P_[2];
+    return skew.norm() <= 1e-12 * control_box().diagonal().norm();
+}
+
 std::pair<double, double> NurbsSurface::domain_u() const { return knot_domain(U_, pu_); }
 std::pair<double, double> NurbsSurface::domain_v() const { return knot_domain(V_, pv_); }
 

@@ -35,6 +35,10 @@ public:
     const Eigen::Vector3d& point(int i, int j) const { return P_[i * nv_ + j]; }
     double weight(int i, int j) const { return w_[i * nv_ + j]; }
     bool is_rational() const { return rational_; }
+    // True when S(u, v) = a + u b + v c: degree (1, 1), one span, equal weights and a
+    // parallelogram of control points (to 1e-12 of their extent). Such an S maps a
+    // segment in (u,v) onto the segment between its ends' images.
+    bool is_affine() const;
     std::pair<double, double> domain_u() const;
     std::pair<double, double> domain_v() const;
 

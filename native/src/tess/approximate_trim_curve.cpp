@@ -93,7 +93,7 @@ double chord_parameter_bound(const std::vector<Eigen::Vector3d>& h) {
 // allocation is stored (fuzz finding 11: 2 GB for a 2^19-piece curve).
 struct Subdivider {
     double budget;       // γ·tol
-    double speed;        // sqrt((M^u)² + (M^v)²) over the piece's region
+    double speed;        // sqrt((M^u)² + (M^v)²) over the piece's region; 0 on an affine S
     std::size_t limit;   // most pieces accepted before the curve is given up
     mesh::Deadline* deadline;    // checked per part; nullptr: none
     std::vector<double>* s_out;  // right ends of accepted pieces, in order
@@ -111,7 +111,7 @@ struct Subdivider {
             Part part = std::move(todo.back());
             todo.pop_back();
             mesh::check_deadline(deadline, "trim curve approximation");
-            const double e = line_bound(part.P3) + speed * chord_parameter_bound(part.P2);
+            const double e = line_bound(part.P3) + (speed > 0.0 ? speed * chord_parameter_bound(part.P2) : 0.0);
             if (e <= budget || part.depth >= kMaxSubdivisionDepth) {
                 if (s_out->size() >= limit) throw_too_many_points();
                 s_out->push_back(part.sb);
@@ -191,13 +191,15 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
             const SurfaceDerivativeBounds Ms = surface_derivative_bounds(S, box);
             std::vector<double> s_values;
             const std::size_t limit = kMaxTrimPoints - out.points.size();
-            Subdivider{budget, std::hypot(Ms.Mu, Ms.Mv), limit, deadline, &s_values}.run(piece.P, P2);
+            // An affine S maps the uv chord onto the 3D chord, so e_line bounds both.
+            const double speed = S.is_affine() ? 0.0 : std::hypot(Ms.Mu, Ms.Mv);
+            Subdivider{budget, speed, limit, deadline, &s_values}.run(piece.P, P2);
             append_points(S, c, piece.t0, piece.t1, s_values, &out, deadline);
         }
         const geom::NurbsCurve2d::Box box = c.control_box();
         const SurfaceDerivativeBounds Ms =
             surface_derivative_bounds(S, Eigen::AlignedBox2d(box.min(), box.max()));
-        simplify_trim_polyline(&out, (1.0 - kTrimGamma) * tolerance, std::hypot(Ms.Mu, Ms.Mv));
+        simplify_trim_polyline(&out, (1.0 - kTrimGamma) * tolerance, S.is_affine() ? 0.0 : std::hypot(Ms.Mu, Ms.Mv));
         break;
     }
     case TrimMethod::kYang: {

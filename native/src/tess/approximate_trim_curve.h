@@ -38,7 +38,9 @@ constexpr std::size_t kMaxTrimPoints = std::size_t(1) << 19;
 //    in place of M^u + M^v: departure, tighter; |c - l| from the control points of
 //    the numerator of c - l, re-derived), so points the surface grid adds on a
 //    segment stay within tolerance too (departure from [Balazs], which bounds the
-//    3D chord only). Then simplify_trim_polyline with (1 - γ)·tol.
+//    3D chord only). On an affine S (NurbsSurface::is_affine: plane patches) S maps
+//    the uv chord onto the 3D chord, so e_uv = 0 there. Then simplify_trim_polyline
+//    with (1 - γ)·tol.
 //    Inexact lifts (d3d > kMaxLiftDegree) use the kYang steps with γ·tol.
 //  kYang [Yang] eq. 9-11: per piece of trim_curve_breaks, dt = sqrt(tol / (M1 + M2)),
 //    M1 = (M^u + M^v) M^tt / 8, M2 = (M^uu (M^t_u)² + 2 M^uv M^t_u M^t_v + M^vv (M^t_v)²) / 8,

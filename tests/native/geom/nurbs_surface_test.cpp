@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "geom/analytic_surfaces.h"
 #include "geom/error.h"
 #include "geom/knot_vector.h"
 #include "test_support.h"
@@ -376,6 +377,25 @@ TEST(NurbsSurface, ValidationErrorsNameTheProblem) {
 
     EXPECT_NE(error_message(1, 1, K, K, 2, 2, P, {1, 1, 1}).find("weights"), std::string::npos);
     EXPECT_NE(error_message(2, 1, K, K, 2, 2, P).find("u knots"), std::string::npos);
+}
+
+// is_affine: S = a + u b + v c exactly. A plane patch is; a bilinear patch whose four
+// points form a planar trapezoid lies in a plane but is not affine in (u,v), and
+// neither is the plane with unequal weights or a twisted bilinear patch.
+TEST(NurbsSurface, IsAffineOnlyForParallelogramBilinearPatches) {
+    const NurbsSurface plane = plane_patch({1, 2, 3}, {2, 0, 1}, {0, 3, -1}, -1.0, 4.0, 0.5, 2.0);
+    EXPECT_TRUE(plane.is_affine());
+    EXPECT_TRUE(plane.transformed(Eigen::Affine3d(Eigen::Scaling(1e6))).is_affine());
+    const std::vector<double> k = {0, 0, 1, 1};
+    const NurbsSurface trapezoid(1, 1, k, k, 2, 2, {{0, 0, 0}, {0, 1, 0}, {2, 0, 0}, {1.5, 1, 0}});
+    EXPECT_FALSE(trapezoid.is_affine());
+    const NurbsSurface twisted(1, 1, k, k, 2, 2, {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0.5}});
+    EXPECT_FALSE(twisted.is_affine());
+    const NurbsSurface weighted(1, 1, k, k, 2, 2, {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}}, {1, 1, 1, 2});
+    EXPECT_FALSE(weighted.is_affine());
+    const NurbsSurface elevated(2, 1, {0, 0, 0, 1, 1, 1}, k, 3, 2,
+                                {{0, 0, 0}, {0, 1, 0}, {0.5, 0, 0}, {0.5, 1, 0}, {1, 0, 0}, {1, 1, 0}});
+    EXPECT_FALSE(elevated.is_affine());  // affine too, but only the one-span bilinear form is recognised
 }
 
 }  // namespace

@@ -4,7 +4,10 @@
 
 #include <cstdio>
 
+#include "geom/analytic_curves.h"
+#include "geom/analytic_surfaces.h"
 #include "geom/error.h"
+#include <cmath>
 #include "tess/tess_test_cases.h"
 #include "test_support.h"
 
@@ -125,6 +128,34 @@ TEST(ApproximateTrimCurve, PointsAreCappedWhereTheCurveIsTooLongForTheTolerance)
             EXPECT_NE(std::string(e.what()).find(std::to_string(kMaxTrimPoints)), std::string::npos) << e.what();
         }
     }
+}
+
+// On an affine surface (a plane patch) S maps the uv chord onto the 3D chord, so the
+// subdivision bounds the 3D chord alone (issue 10: plane faces carried the uv term on
+// top, about 2.4 times the sagitta). A circle of radius r: its rational quadratic
+// segments of angle a are halved until the sagitta r (1 - cos(a / 2^k / 2)) is within
+// γ tol (line_bound is the exact sagitta of such an arc), and the simplification with
+// (1 - γ) tol cannot merge two pieces (their joint chord's sagitta is about 4 times
+// one piece's, above γ tol / 4 >= (1 - γ) tol).
+TEST(ApproximateTrimCurve, OnAPlaneTheSubdivisionBoundsTheChordAlone) {
+    const double r = 10.0, tol = 0.1;
+    const geom::NurbsSurface plane =
+        geom::plane_patch(Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 0.6, 0.8), -20, 20, -20, 20);
+    ASSERT_TRUE(plane.is_affine());
+    const geom::NurbsCurve2d circle = geom::to_2d(
+        geom::circular_arc(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), r, 0.0, 2 * test::kPi));
+    const size_t segments = circle.bezier_segments().size();
+    double angle = 2 * test::kPi / segments;
+    size_t pieces = segments;
+    while (r * (1 - std::cos(angle / 2)) > kTrimGamma * tol) {
+        angle /= 2;
+        pieces *= 2;
+    }
+    const TrimPolyline poly = approximate_trim_curve(plane, circle, tol, TrimMethod::kBezier3d);
+    EXPECT_EQ(poly.points.size(), pieces + 1);  // 4 quarter arcs: 32 chords of 11.25 degrees
+    const test::Deviation dev = test::polyline_deviation(plane, circle, poly);
+    EXPECT_LE(dev.max(), tol);
+    EXPECT_GT(dev.chord, 0.25 * kTrimGamma * tol);  // the sagitta of the chosen pieces
 }
 
 }  // namespace
