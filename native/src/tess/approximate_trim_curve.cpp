@@ -111,6 +111,7 @@ struct Subdivider {
             Part part = std::move(todo.back());
             todo.pop_back();
             mesh::check_deadline(deadline, "trim curve approximation");
+            // speed 0: no uv term (and no 0 x inf from a weight that is not positive).
             const double e = line_bound(part.P3) + (speed > 0.0 ? speed * chord_parameter_bound(part.P2) : 0.0);
             if (e <= budget || part.depth >= kMaxSubdivisionDepth) {
                 if (s_out->size() >= limit) throw_too_many_points();
@@ -178,6 +179,8 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
     switch (method) {
     case TrimMethod::kBezier3d: {
         const double budget = kTrimGamma * tolerance;
+        // An affine S maps the uv chord onto the 3D chord, so e_line bounds both.
+        const bool affine = S.is_affine();
         for (const LiftedPiece& piece : lift_trim_curve(S, c)) {
             if (deadline) deadline->check_now("trim curve approximation");
             if (!piece.exact) {
@@ -191,15 +194,14 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
             const SurfaceDerivativeBounds Ms = surface_derivative_bounds(S, box);
             std::vector<double> s_values;
             const std::size_t limit = kMaxTrimPoints - out.points.size();
-            // An affine S maps the uv chord onto the 3D chord, so e_line bounds both.
-            const double speed = S.is_affine() ? 0.0 : std::hypot(Ms.Mu, Ms.Mv);
+            const double speed = affine ? 0.0 : std::hypot(Ms.Mu, Ms.Mv);
             Subdivider{budget, speed, limit, deadline, &s_values}.run(piece.P, P2);
             append_points(S, c, piece.t0, piece.t1, s_values, &out, deadline);
         }
         const geom::NurbsCurve2d::Box box = c.control_box();
         const SurfaceDerivativeBounds Ms =
             surface_derivative_bounds(S, Eigen::AlignedBox2d(box.min(), box.max()));
-        simplify_trim_polyline(&out, (1.0 - kTrimGamma) * tolerance, S.is_affine() ? 0.0 : std::hypot(Ms.Mu, Ms.Mv));
+        simplify_trim_polyline(&out, (1.0 - kTrimGamma) * tolerance, affine ? 0.0 : std::hypot(Ms.Mu, Ms.Mv));
         break;
     }
     case TrimMethod::kYang: {

@@ -2,12 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "geom/analytic_curves.h"
 #include "geom/analytic_surfaces.h"
 #include "geom/error.h"
-#include <cmath>
 #include "tess/tess_test_cases.h"
 #include "test_support.h"
 
