@@ -512,16 +512,14 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
     return out;
 }
 
-
 // One pass over the model, face f's trims and cells at scales.trim[f] and
 // scales.cell[f] times their share of the tolerance (a shared edge's trims at the
 // smaller of its faces'); *areas gets each meshed face's area and the areas its
 // chords lose (zero for the others). `state`: the previous pass's (empty for the
-// first), replaced by this one's. Faces are meshed to options.tolerance; joining
-// them moves vertices by at most `weld_distance`.
+// first), replaced by this one's. Faces are meshed to options.tolerance and gathered
+// in face order, not yet joined (join_pass).
 TessellationResult tessellate_pass(const geom::Model& model, const TessellationOptions& options,
-                                   double weld_distance, const FaceScales& scales,
-                                   std::vector<FaceArea>* areas, PassState& state) {
+                                   const FaceScales& scales, std::vector<FaceArea>* areas, PassState& state) {
     PassState previous = std::move(state);  // its unchanged faces' outputs are moved on
     const bool has_previous = !previous.outputs.empty();
     state = PassState{scales, std::vector<double>(model.edges.size(), 0.0), {}, {}, {}, {}};
@@ -531,8 +529,6 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     result.tolerance = options.tolerance;
     const int threads = mesh::resolve_threads(options.threads);
     const std::vector<double>& trim_scale = scales.trim;
-    const double least_scale =
-        trim_scale.empty() ? 1.0 : *std::min_element(trim_scale.begin(), trim_scale.end());
 
     // Phase 1: each shared edge approximated once, on the first face (in face order)
     // that uses it.
@@ -700,10 +696,20 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
         result.seconds.trim = edge_seconds + face_wall;
     }
 
-    // Join the faces by position: snap open-boundary vertices within the weld
-    // tolerance (never collapsing a triangle, never moving a vertex by more than
-    // it), close T-junctions between faces, flag edges. Vertices stay per face.
-    start = Clock::now();
+    return result;
+}
+
+// Joins the faces of a pass's mesh by position: snaps open-boundary vertices within
+// `weld_distance` (never collapsing a triangle, never moving a vertex by more than
+// it), closes T-junctions between faces, flags edges. Vertices stay per face. Only
+// the pass that is kept is joined (the area budget compares the faces' own meshes).
+void join_pass(TessellationResult& result, const TessellationOptions& options, double weld_distance,
+               const FaceScales& scales) {
+    const auto start = Clock::now();
+    const std::vector<double>& trim_scale = scales.trim;
+    const double least_scale =
+        trim_scale.empty() ? 1.0 : *std::min_element(trim_scale.begin(), trim_scale.end());
+    const int threads = mesh::resolve_threads(options.threads);
     mesh::Mesh& m = result.mesh;
     if (m.vertex_count() > 0) {
         join_faces(m, weld_distance, least_scale * trim_tolerance(options), threads, result.warnings);
@@ -711,7 +717,6 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
         result.open_edges = count_position_open_edges(m, threads);
     }
     result.seconds.weld = seconds_since(start);
-    return result;
 }
 
 // Adds the seconds of `pass` to `total`.
@@ -733,7 +738,7 @@ TessellationResult tessellate_sewn(const geom::Model& model, const TessellationO
     FaceScales scale{ones, ones};
     std::vector<FaceArea> areas;
     PassState state;
-    TessellationResult result = tessellate_pass(model, face_options, weld_distance, scale, &areas, state);
+    TessellationResult result = tessellate_pass(model, face_options, scale, &areas, state);
 
     double worst = worst_loss_share(groups, areas);
     const double first_worst = worst;
@@ -745,7 +750,7 @@ TessellationResult tessellate_sewn(const geom::Model& model, const TessellationO
         if (over.empty()) break;
         for (int g : over) tightened[g] = 1;
         std::vector<FaceArea> finer_areas;
-        TessellationResult finer = tessellate_pass(model, face_options, weld_distance, next, &finer_areas, state);
+        TessellationResult finer = tessellate_pass(model, face_options, next, &finer_areas, state);
         add_seconds(result.seconds, finer.seconds);
         if (finer.failed_faces.size() > result.failed_faces.size()) break;
         // A polyline's points change in steps, so a round that loses no less keeps
@@ -768,6 +773,7 @@ TessellationResult tessellate_sewn(const geom::Model& model, const TessellationO
                                   " face(s) meshed again with finer trims and cells (now " +
                                   geom::format_value(100.0 * worst) + " %)");
     }
+    join_pass(result, face_options, weld_distance, scale);
     result.tolerance = options.tolerance;
     return result;
 }
