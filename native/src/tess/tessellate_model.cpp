@@ -124,6 +124,9 @@ struct PassState {
     std::vector<std::optional<TrimPolyline>> polyline;      // after unify_edge_ends
     std::vector<std::vector<Eigen::Vector3d>> points;
     std::vector<FaceOutput> outputs;
+    // Each face's verify_face reference, made when the face is first verified: it
+    // measures the exact face, not its mesh, so every pass shares it.
+    std::vector<std::optional<FaceReference>> references;
 };
 
 bool same_polyline(const std::optional<TrimPolyline>& a, const std::optional<TrimPolyline>& b) {
@@ -419,7 +422,7 @@ void meet_midway(const geom::Model& model, const std::vector<int>& shared, const
 // passed, the attempt stops with out.timed_out set.
 FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions& options, double trim_scale,
                      double cell_scale, const SharedEdges& edges, const FaceAttempt& attempt,
-                     mesh::Deadline& deadline) {
+                     mesh::Deadline& deadline, std::optional<FaceReference>& reference) {
     const double trim_tol = trim_scale * trim_tolerance(options);
     const geom::Face& face = model.faces[f];
     FaceOutput out;
@@ -490,7 +493,8 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
         }
         const auto verify_start = Clock::now();
         deadline.check_now("verification");
-        out.verification = verify_face(face, out.mesh, polygons, options.tolerance, f);
+        if (!reference) reference = face_reference(face, options.tolerance);
+        out.verification = verify_face(face, *reference, out.mesh, polygons, f);
         out.verify_seconds = seconds_since(verify_start);
         deadline.check_now("verification");
         if (!out.verification->passed()) out.error = out.verification->reason;
@@ -522,7 +526,9 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
                                    const FaceScales& scales, std::vector<FaceArea>* areas, PassState& state) {
     PassState previous = std::move(state);  // its unchanged faces' outputs are moved on
     const bool has_previous = !previous.outputs.empty();
-    state = PassState{scales, std::vector<double>(model.edges.size(), 0.0), {}, {}, {}, {}};
+    state = PassState{scales, std::vector<double>(model.edges.size(), 0.0), {}, {}, {}, {},
+                      std::move(previous.references)};
+    state.references.resize(model.faces.size());
     TessellationResult result;
     result.faces = static_cast<int>(model.faces.size());
     areas->assign(model.faces.size(), FaceArea{});
@@ -635,11 +641,14 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
             return;
         }
         mesh::Deadline deadline(options.face_timeout, options.cancel);
-        out = mesh_face(model, f, options, trim_scale[f], scales.cell[f], edges, first_attempt(options), deadline);
+        std::optional<FaceReference>& reference = state.references[f];
+        out = mesh_face(model, f, options, trim_scale[f], scales.cell[f], edges, first_attempt(options), deadline,
+                        reference);
         out.seconds = deadline.elapsed();
         if (out.error.empty() || out.timed_out) return;
         FaceOutput retry =
-            mesh_face(model, f, options, trim_scale[f], scales.cell[f], edges, second_attempt(options), deadline);
+            mesh_face(model, f, options, trim_scale[f], scales.cell[f], edges, second_attempt(options), deadline,
+                      reference);
         const double trim_seconds = out.trim_seconds + retry.trim_seconds;
         const double verify_seconds = out.verify_seconds + retry.verify_seconds;
         FaceTimings timings = retry.timings;

@@ -96,12 +96,6 @@ std::vector<double> breaks(const std::vector<double>& U, double a, double b) {
     return t;
 }
 
-// A point S(c(t)) of a trim curve.
-struct CurveSample {
-    double t = 0.0;
-    Eigen::Vector3d xyz;
-};
-
 // Points S(c(t)) along one coedge, first and last included, refined where the
 // chord leaves the curve.
 std::vector<CurveSample> sample_coedge(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
@@ -205,44 +199,62 @@ double tilt_bound(const geom::NurbsSurface& S, const mesh::Mesh& m) {
 
 }  // namespace
 
-FaceVerification verify_face(const geom::Face& face, const mesh::Mesh& face_mesh,
-                             const std::vector<TrimPolygon>& loops, double tolerance, int face_id,
-                             const VerifyFaceOptions& options) {
+FaceReference face_reference(const geom::Face& face, double tolerance, const VerifyFaceOptions& options) {
     if (!(tolerance > 0.0) || !std::isfinite(tolerance))
         throw geom::InvalidInput("verify_face: tolerance = " + geom::format_value(tolerance) +
                                  "; expected > 0 and finite");
     const geom::NurbsSurface& S = face.surface;
+    FaceReference ref;
+    ref.tolerance = tolerance;
+    // The trim loops' curves in 3D: samples per coedge, and all as segments.
+    ref.samples.resize(face.loops.size());
+    for (std::size_t l = 0; l < face.loops.size(); ++l)
+        for (const geom::Coedge& coedge : face.loops[l].coedges) {
+            ref.samples[l].push_back(sample_coedge(S, coedge.curve, kChordShare * tolerance));
+            const std::vector<CurveSample>& pts = ref.samples[l].back();
+            for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+                ref.perimeter += (pts[i + 1].xyz - pts[i].xyz).norm();
+                add_segment(ref.curves, pts[i].xyz, pts[i + 1].xyz);
+            }
+            for (const auto& p : pts) ref.extent.extend(p.xyz);
+        }
+    ref.area_coarse =
+        trimmed_area(S, TrimRegion(face, coarse_trim(face, options)), options.coarse_cells, options.coarse_levels);
+    return ref;
+}
+
+FaceVerification verify_face(const geom::Face& face, const mesh::Mesh& face_mesh,
+                             const std::vector<TrimPolygon>& loops, double tolerance, int face_id,
+                             const VerifyFaceOptions& options) {
+    FaceReference reference = face_reference(face, tolerance, options);
+    return verify_face(face, reference, face_mesh, loops, face_id, options);
+}
+
+FaceVerification verify_face(const geom::Face& face, FaceReference& ref, const mesh::Mesh& face_mesh,
+                             const std::vector<TrimPolygon>& loops, int face_id, const VerifyFaceOptions& options) {
+    const double tolerance = ref.tolerance;
+    const geom::NurbsSurface& S = face.surface;
     const std::string prefix = "face " + std::to_string(face_id) + ": ";
     FaceVerification out;
-
     // Edge gap the polygons carry by design.
-    Eigen::AlignedBox3d extent;
+    Eigen::AlignedBox3d extent = ref.extent;
     for (const TrimPolygon& loop : loops)
         for (const PolylinePoint& p : loop.points) {
             out.edge_gap = std::max(out.edge_gap, (p.xyz - S.evaluate(p.uv.x(), p.uv.y())).norm());
             extent.extend(p.xyz);
         }
-
-    // The trim loops' curves in 3D: samples per coedge, and all as segments.
-    mesh::Mesh curves;
-    std::vector<std::vector<std::vector<CurveSample>>> samples(face.loops.size());
-    for (std::size_t l = 0; l < face.loops.size(); ++l)
-        for (const geom::Coedge& coedge : face.loops[l].coedges) {
-            samples[l].push_back(sample_coedge(S, coedge.curve, kChordShare * tolerance));
-            const std::vector<CurveSample>& pts = samples[l].back();
-            for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-                out.perimeter += (pts[i + 1].xyz - pts[i].xyz).norm();
-                add_segment(curves, pts[i].xyz, pts[i + 1].xyz);
-            }
-            for (const auto& p : pts) extent.extend(p.xyz);
-        }
+    out.perimeter = ref.perimeter;
+    const auto& samples = ref.samples;
+    const mesh::Mesh& curves = ref.curves;
+    const auto fine_region = [&]() -> const TrimRegion& {
+        if (!ref.fine_region) ref.fine_region.emplace(face, options.trim);
+        return *ref.fine_region;
+    };
     const double rounding = kRoundingShare * tolerance +
                             (extent.isEmpty() ? 0.0 : kRoundingRelative * extent.max().cwiseAbs().maxCoeff());
     out.boundary_bound = tolerance + out.edge_gap + rounding;
-
     // (a) Area, coarsely, then finely if the mesh is not well inside the bound.
-    out.area_exact = trimmed_area(S, TrimRegion(face, coarse_trim(face, options)), options.coarse_cells,
-                                  options.coarse_levels);
+    out.area_exact = ref.area_coarse;
     out.area_mesh = mesh::surface_area(face_mesh);
     const double tilt = kCurvatureSafety * tilt_bound(S, face_mesh);
     const auto bound = [&] {
@@ -251,7 +263,8 @@ FaceVerification verify_face(const geom::Face& face, const mesh::Mesh& face_mesh
     };
     out.area_bound = bound();
     if (std::abs(out.area_mesh - out.area_exact) > options.recheck_share * out.area_bound) {
-        out.area_exact = trimmed_area(S, TrimRegion(face, options.trim), options.area_cells, options.area_levels);
+        if (!ref.area_fine) ref.area_fine = trimmed_area(S, fine_region(), options.area_cells, options.area_levels);
+        out.area_exact = *ref.area_fine;
         out.area_bound = bound();
     }
     if (std::abs(out.area_mesh - out.area_exact) > out.area_bound) {
@@ -290,15 +303,13 @@ FaceVerification verify_face(const geom::Face& face, const mesh::Mesh& face_mesh
     // Curve points far from the mesh boundary count unless they bound no area
     // (bounds_region; the fine region is built only for such points).
     const TriangleBvh boundary_tree(boundary);
-    std::optional<TrimRegion> fine_region;
     out.loop_gap_loop = samples.empty() ? -1 : 0;
     for (std::size_t l = 0; l < samples.size(); ++l)
         for (std::size_t c = 0; c < samples[l].size(); ++c)
             for (const CurveSample& x : samples[l][c]) {
                 TriangleBvh::Hit hit = boundary_tree.closest(x.xyz, kProbeShare * out.boundary_bound);
                 if (hit.triangle < 0) {
-                    if (!fine_region) fine_region.emplace(face, options.trim);
-                    if (!bounds_region(*fine_region, S, face.loops[l].coedges[c].curve, x.t,
+                    if (!bounds_region(fine_region(), S, face.loops[l].coedges[c].curve, x.t,
                                        kAcrossShare * tolerance)) {
                         ++out.lobe_samples;
                         continue;

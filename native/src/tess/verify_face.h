@@ -9,8 +9,11 @@
 // numbered as in geom::Face, from 0.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Geometry>
 
 #include "geom/face.h"
 #include "mesh/mesh.h"
@@ -76,6 +79,36 @@ struct VerifyFaceOptions {
     int area_levels = 2;
     double recheck_share = 0.5;
 };
+
+// A point S(c(t)) of a trim curve.
+struct CurveSample {
+    double t = 0.0;
+    Eigen::Vector3d xyz;
+};
+
+// What verify_face measures of the exact trimmed face alone, not of a mesh: the trim
+// loops' curves sampled in 3D (refined to kChordShare of T, so it depends on T) and
+// their length, and the exact trimmed area, coarse, and fine once a mesh needs it. A
+// face meshed again (tessellate_model's area rounds) is verified against the same
+// reference. Used by one thread at a time (the fine measures are filled in lazily).
+struct FaceReference {
+    double tolerance = 0.0;
+    std::vector<std::vector<std::vector<CurveSample>>> samples;  // per loop, per coedge
+    mesh::Mesh curves;           // the samples' chords, as degenerate triangles (a, b, b)
+    double perimeter = 0.0;      // the chords' 3D length
+    Eigen::AlignedBox3d extent;  // of the samples
+    double area_coarse = 0.0;    // trimmed_area with the coarse options
+    std::optional<double> area_fine;
+    std::optional<TrimRegion> fine_region;  // with options.trim
+};
+
+// The reference of `face` at tolerance T (> 0 and finite, else geom::InvalidInput).
+FaceReference face_reference(const geom::Face& face, double tolerance, const VerifyFaceOptions& options = {});
+
+// Checks `face_mesh` against `reference` (face_reference of the same face and options).
+FaceVerification verify_face(const geom::Face& face, FaceReference& reference, const mesh::Mesh& face_mesh,
+                             const std::vector<TrimPolygon>& loops, int face_id,
+                             const VerifyFaceOptions& options = {});
 
 // Checks `face_mesh` (the mesh of `face` alone, with normals, as tessellate_face
 // returns it and the face's weld leaves it) against the exact trimmed face. `loops`:

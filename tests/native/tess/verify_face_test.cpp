@@ -107,6 +107,44 @@ TEST(VerifyFace, PlateWithThreeHolesPassesWithTheExactArea) {
     }
 }
 
+// One reference serves every mesh of the face (tessellate_model's area rounds): the
+// figures are those of a reference made for each check, the fine area is measured
+// once, when the first mesh needs it, and a good mesh after a bad one still passes.
+TEST(VerifyFace, OneReferenceJudgesEveryMeshOfTheFace) {
+    const geom::Face face = plate();
+    const double T = 0.01;
+    const std::vector<TrimPolygon> polygons = polygons_of(face, T);
+    std::vector<TrimPolygon> outer_only = polygons;
+    outer_only.resize(1);
+    const mesh::Mesh good = tessellate_face(face, polygons, at(T), 0);
+    const mesh::Mesh over_holes = tessellate_face(face, outer_only, at(T), 0);
+
+    FaceReference reference = face_reference(face, T);
+    EXPECT_FALSE(reference.area_fine.has_value());
+    EXPECT_EQ(reference.samples.size(), face.loops.size());
+    const FaceVerification first = verify_face(face, reference, good, polygons, 0);
+    EXPECT_TRUE(first.passed()) << first.reason;
+    EXPECT_FALSE(reference.area_fine.has_value());  // well inside the bound: coarse only
+
+    const FaceVerification bad = verify_face(face, reference, over_holes, outer_only, 0);
+    EXPECT_EQ(bad.defect, FaceDefect::kArea);
+    ASSERT_TRUE(reference.area_fine.has_value());
+    EXPECT_NEAR(*reference.area_fine, plate_area(), 1e-3 * 3.0 * M_PI);
+
+    const FaceVerification again = verify_face(face, reference, good, polygons, 0);
+    EXPECT_TRUE(again.passed()) << again.reason;
+    for (const auto& [shared, alone] : {std::pair{first, verify_face(face, good, polygons, T, 0)},
+                                        std::pair{bad, verify_face(face, over_holes, outer_only, T, 0)}}) {
+        EXPECT_EQ(shared.defect, alone.defect);
+        EXPECT_EQ(shared.area_exact, alone.area_exact);
+        EXPECT_EQ(shared.area_bound, alone.area_bound);
+        EXPECT_EQ(shared.perimeter, alone.perimeter);
+        EXPECT_EQ(shared.loop_gap, alone.loop_gap);
+        EXPECT_EQ(shared.boundary_gap, alone.boundary_gap);
+    }
+    EXPECT_THROW(face_reference(face, 0.0), geom::InvalidInput);
+}
+
 TEST(VerifyFace, PlateMeshedOverItsHolesFailsOnTheArea) {
     const geom::Face face = plate();
     const double T = 0.01;
