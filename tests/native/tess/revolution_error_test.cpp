@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
+#include <set>
 
 #include "geom/analytic_surfaces.h"
 #include "surface_test_support.h"
@@ -171,11 +173,14 @@ TEST(RevolutionError, BoundHoldsOnEveryKindAndIsTightOnCylinders) {
 
 // A whole cylinder face: the mesh stays within T of the exact cylinder and spends
 // most of it (the generic rational bound's cells are compared in
-// CylinderCellsAreTheSagittaFormulasStrips).
+// CylinderCellsAreTheSagittaFormulasStrips). The circles have 24 chords (sagitta
+// 0.77 T), coarser than the cells (0.8 T at most: 0.27 rad), so the cells split
+// between the circles' points and their bound is what the mesh spends; finer circles
+// would bound it instead (CylinderCellsMeetTheCirclesAtTheirPoints).
 TEST(RevolutionError, CylinderFaceSpendsTheTolerance) {
     const double r = 0.9, T = 0.01;
     geom::Face face = test::face_of(cylinder(r));
-    const std::vector<TrimPolygon> loops = {test::rectangle_loop(face.surface, 0, 2 * M_PI, 0, 3, 64)};
+    const std::vector<TrimPolygon> loops = {test::rectangle_loop(face.surface, 0, 2 * M_PI, 0, 3, 24)};
     TessellationOptions options;
     options.tolerance = T;
     face.surface_kind = "cylinder";
@@ -190,6 +195,34 @@ TEST(RevolutionError, CylinderFaceSpendsTheTolerance) {
             }
     EXPECT_LE(worst, T);
     EXPECT_GE(worst, 0.6 * T);
+}
+
+// A cylinder between two circles given as polylines of n chords each: the cells'
+// splits along the rulings move onto the circles' points (kd_subdivision), so no cell
+// line crosses a chord. Every vertex is then a point of a circle, on the cylinder
+// (a crossing would sit on a chord, inside it by up to the chord's sagitta), and the
+// face is the loop's polygon alone. Without the move, the cells (about 30 around at this
+// T) put a crossing on each circle at every cell line (286 triangles, not 254).
+TEST(RevolutionError, CylinderCellsMeetTheCirclesAtTheirPoints) {
+    const double r = 0.9, T = 0.01;
+    constexpr int n = 64;
+    geom::Face face = test::face_of(cylinder(r));
+    face.surface_kind = "cylinder";
+    const std::vector<TrimPolygon> loops = {test::rectangle_loop(face.surface, 0, 2 * M_PI, 0, 3, n)};
+    TessellationOptions options;
+    options.tolerance = T;
+    const mesh::Mesh m = tessellate_face(face, loops, options, 0);
+    std::set<std::array<double, 2>> on_circles;  // (z, u) of the distinct vertices
+    for (std::size_t v = 0; v < m.positions.size(); ++v) {
+        const Eigen::Vector3d& P = m.positions[v];
+        EXPECT_NEAR(meridian(P).x(), r, 1e-12) << P.transpose();
+        const double z = meridian(P).y();
+        if (std::abs(z) < 1e-12 || std::abs(z - 3.0) < 1e-12) on_circles.insert({std::round(z), m.uvs[v].x()});
+    }
+    // The loop's 4 n points and no other: a polygon of V vertices makes V - 2 triangles.
+    EXPECT_EQ(m.triangle_count(), 4u * n - 2u);
+    // n + 1 points on each circle (u = 0 and u = 2 pi are the seam's two sides).
+    EXPECT_EQ(on_circles.size(), 2u * (n + 1));
 }
 
 }  // namespace
