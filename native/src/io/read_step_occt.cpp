@@ -41,6 +41,7 @@
 #include "io/occt_progress.h"
 #include "io/occt_shape.h"
 #include "io/occt_support.h"
+#include "io/step_instance_names.h"
 
 namespace trimkit::io {
 
@@ -314,6 +315,10 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     monitor.stage(0.0, kParseShare);
     monitor.report(0.0);
     check_step_header(path);
+    {
+        std::ifstream text(path, std::ios::binary);
+        check_step_instance_names(text, path);
+    }
     ScratchDocument scratch;
     Handle(TDocStd_Document)& doc = scratch.get();
     STEPCAFControl_Reader reader;

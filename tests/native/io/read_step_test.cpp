@@ -115,6 +115,33 @@ TEST(ReadStep, DamagedEntityIsReadErrorNotACrash) {
     EXPECT_EQ(read_step(path).faces.size(), 8u);
 }
 
+// A real file with one entity defined a second time (Part 21 names each entity once;
+// OCCT reads such a file and its transfer can recurse without end, fuzz finding 9) is
+// refused before OCCT sees it, naming the line of the second definition.
+TEST(ReadStep, EntityDefinedTwiceIsReadErrorWithItsLine) {
+    REQUIRE_STEP_FILE(path, "xr1-tc-nut.stp");
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t at = text.find("#20=VERTEX_POINT");
+    ASSERT_NE(at, std::string::npos);
+    const std::string definition = text.substr(at, text.find('\n', at) + 1 - at);
+    const std::size_t end = text.find("ENDSEC;", at);
+    ASSERT_NE(end, std::string::npos);
+    text.insert(end, definition);
+    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+    const std::string bad = (std::filesystem::temp_directory_path() / "trimkit_twice_nut.stp").string();
+    std::ofstream(bad) << text;
+    try {
+        read_step(bad);
+        ADD_FAILURE() << "no ReadError";
+    } catch (const geom::ReadError& e) {
+        EXPECT_EQ(e.line(), line);
+        EXPECT_NE(e.reason().find("entity #20 is defined twice"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(bad);
+    EXPECT_EQ(read_step(path).faces.size(), 8u);
+}
+
 TEST(ReadStep, FaceCountsMatchOpenCascade) {
     if (!step_supported()) GTEST_SKIP() << "trimkit built without Open CASCADE";
     if (!std::filesystem::exists(kStepDir)) GTEST_SKIP() << kStepDir << " not found";
