@@ -129,24 +129,22 @@ bool inside_loops(const TrimSegments& trims, double u, double v) {
 }
 
 // A split line through a trim vertex crosses the trim there, at a point on S, instead
-// of on a chord: no crossing vertex is added to the trim, nor (by close_t_junctions)
-// to the neighbour face that shares it. On a cylinder between two circles
-// approximated alike, a split along a ruling at a vertex of one meets a vertex of the
-// other too, and the cells add no boundary point at all (a plate's hole: 67 -> 45
-// points on each circle, 544 -> 432 triangles on xr1-tc-nut.stp at 1e-3). So a split moves to the trim
-// vertex inside the cell nearest to it, within kSnapWindow of the cell's width and
-// at least kSnapKeep of the width from both sides (the halves are subdivided further
-// as before, so the bound still holds for every leaf). Only where the trim crosses
-// the line at the vertex (its neighbours strictly on the two sides, by more than
-// kSnapSide of the width): a trim that touches the line there, or runs along it,
-// would leave the cells' trimming a degenerate crossing.
-// And only in cells whose trims all run across the line steeply in (u,v) (every
-// segment within atan(1 / kSnapSteep) of square to it, as the circles of a surface of
-// revolution are to the lines about its axis; the vertex's next segment too): a cell
-// line moved beside a hole's points left triangles standing across the surface (a
-// frustum with a hole, OcctModels tests) or folded along a cell side (a bicubic with
-// a hole).
+// of on a chord: no crossing vertex is added to the trim, nor (by close_t_junctions) to
+// the face beside it. On a cylinder between two circles approximated alike, a split
+// along a ruling at a vertex of one meets a vertex of the other too, and the cells add
+// no boundary point at all (xr1-tc-nut.stp at 1e-3: 67 -> 45 points on each circle of
+// the plate's hole, 544 -> 384 triangles). So such a split moves to the trim vertex
+// nearest to it within kSnapWindow of the cell's width and at least kSnapKeep of the
+// width from its sides; the halves are subdivided further as before, so every leaf
+// keeps its bound. Only where the trim crosses the line at the vertex (its neighbours
+// on the two sides by more than kSnapSide of the width) and every segment that could
+// cross the line in the window runs square to it (within atan(1 / kSnapSteep)), as a
+// cylinder's circles do: a trim touching the line at the vertex or running along it
+// left non-manifold cells, and a line moved beside a hole's points folded triangles
+// along a cell side (a bicubic with a hole, TessellateFace tests).
 constexpr double kSnapWindow = 0.25, kSnapKeep = 0.2, kSnapSide = 1e-6, kSnapSteep = 1e6;
+// Corners of a cylinder's patch lie this close (relative) to one distance from the axis.
+constexpr double kCylinderRelative = 1e-9;
 
 // The split (local, in (0, 1)) and, when it moved to a vertex, the vertex's own
 // coordinate, which the halves then meet at exactly (the local parameter would give it
@@ -156,14 +154,12 @@ struct Split {
     std::optional<double> at;
 };
 
-// True when `patch` is a piece of a cylinder (a surface of revolution whose meridian
-// is a line parallel to its axis: the same distance from the axis at its four corners)
-// and `in_u` splits it across the angle, along a ruling. A cone's long thin triangles
-// from one circle to the other tilt away from it (a frustum's cells, whole rulings
-// wide, were re-triangulated in 3D and stood across it: OcctModels tests), a
-// cylinder's do not.
-constexpr double kCylinderRelative = 1e-9;
-bool splits_cylinder_across_angle(const RevolutionShape* shape, const BezierPatch& patch, bool in_u) {
+// True when `patch` is a piece of a cylinder (a surface of revolution whose meridian is
+// a line parallel to its axis: its four corners equally far from the axis) and `in_u`
+// splits it along a ruling. Not cones: their whole-ruling cells' long triangles were
+// re-triangulated in 3D and stood across the surface (a frustum with a hole,
+// OcctModels.FrustumCellsAlongWholeRulingsDoNotFold).
+bool splits_cylinder_along_ruling(const RevolutionShape* shape, const BezierPatch& patch, bool in_u) {
     if (!shape || shape->circle_meridian || in_u != (shape->angle_dir == 0)) return false;
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
     for (int i : {0, patch.p})
@@ -176,47 +172,50 @@ bool splits_cylinder_across_angle(const RevolutionShape* shape, const BezierPatc
     return hi - lo <= kCylinderRelative * std::max(hi, 1.0);
 }
 
+// Coordinates along the split direction (across the split line) and across it.
+struct SplitAxes {
+    bool in_u;
+    double along(const Eigen::Vector2d& x) const { return in_u ? x.x() : x.y(); }
+    double across(const Eigen::Vector2d& x) const { return in_u ? x.y() : x.x(); }
+    bool square(const Eigen::Vector2d& d) const { return std::abs(along(d)) >= kSnapSteep * std::abs(across(d)); }
+};
+
+// True when every segment that reaches into [lo, hi] along the axes runs square to them.
+bool segments_square_in(const TrimSegments& trims, const std::vector<int>& segments, const SplitAxes& axes,
+                        double lo, double hi) {
+    for (int s : segments) {
+        const Eigen::Vector2d &p = trims.segments[s][0], &q = trims.segments[s][1];
+        if (std::max(axes.along(p), axes.along(q)) < lo || std::min(axes.along(p), axes.along(q)) > hi) continue;
+        if (!axes.square(q - p)) return false;
+    }
+    return true;
+}
+
 Split snap_split_to_trim_vertex(const TrimSegments& trims, const std::vector<int>& segments,
                                 const BezierPatch& patch, bool in_u, double split) {
+    Split best{split, std::nullopt};
+    if (!splits_cylinder_along_ruling(trims.shape, patch, in_u)) return best;
+    const SplitAxes axes{in_u};
     const double a = in_u ? patch.u0 : patch.v0, b = in_u ? patch.u1 : patch.v1;
     const double c = in_u ? patch.v0 : patch.u0, d = in_u ? patch.v1 : patch.u1;
     const double width = b - a, ideal = a + split * width;
-    Split best{split, std::nullopt};
-    if (!splits_cylinder_across_angle(trims.shape, patch, in_u)) return best;
-    double best_distance = kSnapWindow * width;
-    const auto along_of = [&](const Eigen::Vector2d& x) { return in_u ? x.x() : x.y(); };
-    const auto across_of = [&](const Eigen::Vector2d& x) { return in_u ? x.y() : x.x(); };
-    // Segments that could cross a line in the window (the seam's rulings at the
-    // cell's sides cannot) must all be steep.
-    const double window_lo = std::max(ideal - best_distance, a + kSnapKeep * width);
-    const double window_hi = std::min(ideal + best_distance, b - kSnapKeep * width);
+    const double lo = std::max(ideal - kSnapWindow * width, a + kSnapKeep * width);
+    const double hi = std::min(ideal + kSnapWindow * width, b - kSnapKeep * width);
+    if (!(lo < hi) || !segments_square_in(trims, segments, axes, lo, hi)) return best;
+    double best_distance = std::numeric_limits<double>::infinity();
     for (int s : segments) {
-        const Eigen::Vector2d &p = trims.segments[s][0], &q = trims.segments[s][1];
-        if (std::max(along_of(p), along_of(q)) < window_lo || std::min(along_of(p), along_of(q)) > window_hi)
-            continue;
-        const Eigen::Vector2d d = q - p;
-        if (std::abs(along_of(d)) < kSnapSteep * std::abs(across_of(d))) return best;
-    }
-    for (int s : segments) {
-        // The segment's end vertex, between its start and the next segment's end.
+        // The segment's end vertex x, between its start p and the next segment's end q.
         const Eigen::Vector2d& x = trims.segments[s][1];
-        const double along = along_of(x), across = across_of(x);
-        if (across < c - trims.margin || across > d + trims.margin) continue;  // a trim along the side counts
         const Eigen::Vector2d& p = trims.segments[s][0];
         const Eigen::Vector2d& q = trims.segments[trims.next[s]][1];
-        const double before = along_of(p) - along, after = along_of(q) - along;
-        const double side = kSnapSide * width;
+        const double along = axes.along(x), across = axes.across(x);
+        // A trim along the cell's side counts (it lies within the margin).
+        if (along < lo || along > hi || across < c - trims.margin || across > d + trims.margin) continue;
+        const double before = axes.along(p) - along, after = axes.along(q) - along, side = kSnapSide * width;
         if (!((before < -side && after > side) || (before > side && after < -side))) continue;
-        const double before_across = std::abs(across_of(p) - across);
-        const double after_across = std::abs(across_of(q) - across);
-        if (std::abs(before) < kSnapSteep * before_across || std::abs(after) < kSnapSteep * after_across) continue;
-        {
-            const double distance = std::abs(along - ideal);
-            if (distance >= best_distance || along < a + kSnapKeep * width || along > b - kSnapKeep * width)
-                continue;
-            best_distance = distance;
-            best = Split{(along - a) / width, along};
-        }
+        if (!axes.square(x - p) || !axes.square(q - x) || std::abs(along - ideal) >= best_distance) continue;
+        best_distance = std::abs(along - ideal);
+        best = Split{(along - a) / width, along};
     }
     return best;
 }
@@ -291,7 +290,8 @@ void subdivide(const BezierPatch& patch, TrimSegments& trims, const Stretch& str
         if (trims.active && !node.segments.empty())
             split = snap_split_to_trim_vertex(trims, node.segments, current, in_u, split.local);
         auto halves = in_u ? split_u(current, split.local) : split_v(current, split.local);
-        if (split.at) (in_u ? halves.first.u1 : halves.first.v1) = (in_u ? halves.second.u0 : halves.second.v0) = *split.at;
+        if (split.at && in_u) halves.first.u1 = halves.second.u0 = *split.at;
+        if (split.at && !in_u) halves.first.v1 = halves.second.v0 = *split.at;
         Node first, second;
         first.patch = std::move(halves.first);
         second.patch = std::move(halves.second);
