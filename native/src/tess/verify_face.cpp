@@ -236,6 +236,7 @@ FaceVerification verify_face(const geom::Face& face, FaceReference& ref, const m
     const geom::NurbsSurface& S = face.surface;
     const std::string prefix = "face " + std::to_string(face_id) + ": ";
     FaceVerification out;
+
     // Edge gap the polygons carry by design.
     Eigen::AlignedBox3d extent = ref.extent;
     for (const TrimPolygon& loop : loops)
@@ -250,9 +251,11 @@ FaceVerification verify_face(const geom::Face& face, FaceReference& ref, const m
         if (!ref.fine_region) ref.fine_region.emplace(face, options.trim);
         return *ref.fine_region;
     };
+
     const double rounding = kRoundingShare * tolerance +
                             (extent.isEmpty() ? 0.0 : kRoundingRelative * extent.max().cwiseAbs().maxCoeff());
     out.boundary_bound = tolerance + out.edge_gap + rounding;
+
     // (a) Area, coarsely, then finely if the mesh is not well inside the bound.
     out.area_exact = ref.area_coarse;
     out.area_mesh = mesh::surface_area(face_mesh);
