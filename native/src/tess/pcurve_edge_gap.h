@@ -16,4 +16,12 @@ namespace trimkit::tess {
 // strays by a share of T.
 double pcurve_edge_gap(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, const geom::NurbsCurve3d& edge);
 
+// The same measured closely, for a figure worth reporting: S(c(t)) at kFineGapSamples
+// + 1 points of c's domain, each to its foot on the edge curve (Newton's method on
+// (C(s) - P)·C'(s) = 0 from the nearest of 64 samples of C, clamped to C's domain),
+// so a curved edge's chords do not count.
+constexpr int kFineGapSamples = 32;
+double pcurve_edge_gap_fine(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
+                            const geom::NurbsCurve3d& edge);
+
 }  // namespace trimkit::tess

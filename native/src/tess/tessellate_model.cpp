@@ -555,6 +555,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
                 }
             }
     // The face whose p-curve follows the edge's 3D curve gives the edge its points.
+    std::vector<double> curve_gap(model.edges.size(), 0.0);  // reported below when over T
     mesh::parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
         const int e = shared[k];
         if (second[e].face < 0 || !model.edges[e].curve) return;
@@ -563,9 +564,31 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
             return pcurve_edge_gap(face.surface, face.loops[r.loop].coedges[r.coedge].curve, *model.edges[e].curve);
         };
         const double first_gap = gap(first[e]);
-        if (first_gap > kEdgeGapShare * options.tolerance && 2.0 * gap(second[e]) < first_gap)
-            std::swap(first[e], second[e]);
+        double kept_gap = first_gap;
+        if (first_gap > kEdgeGapShare * options.tolerance) {
+            const double second_gap = gap(second[e]);
+            if (2.0 * second_gap < first_gap) {
+                std::swap(first[e], second[e]);
+                kept_gap = second_gap;
+            }
+        }
+        // Neither face follows the file's edge curve (its trims agree, its curve does
+        // not): the mesh follows the faces, and says so.
+        if (kept_gap > options.tolerance) {
+            const geom::Face& face = model.faces[first[e].face];
+            curve_gap[e] = pcurve_edge_gap_fine(
+                face.surface, face.loops[first[e].loop].coedges[first[e].coedge].curve, *model.edges[e].curve);
+        }
     });
+    const double user_tolerance = options.tolerance / (1.0 - kWeldShare);  // the pass gets face_tolerance
+    for (int e : shared)
+        if (curve_gap[e] > user_tolerance)
+            result.warnings.push_back(
+                "edge " + std::to_string(e) + " (faces " + std::to_string(first[e].face) + " and " +
+                std::to_string(second[e].face) + "): the file's 3D curve lies " + geom::format_value(curve_gap[e]) +
+                " from the faces' trims, more than the tolerance " + geom::format_value(user_tolerance) +
+                "; the mesh follows the faces, so a measure that takes the edge's curve for their boundary (as "
+                "Open CASCADE's does, within the edge's own tolerance) finds up to that there");
     std::vector<std::optional<TrimPolyline>> edge_polyline(model.edges.size());
     std::vector<std::vector<Eigen::Vector3d>> edge_points(model.edges.size());
     mesh::parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
