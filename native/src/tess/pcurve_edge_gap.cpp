@@ -37,41 +37,49 @@ double distance_to_curve(const geom::NurbsCurve3d& edge, const Eigen::Vector3d& 
     return std::min(best, (edge.evaluate(s) - p).norm());
 }
 
+// The edge curve at kEdgeSamples + 1 equal parameter steps.
+std::vector<Eigen::Vector3d> edge_samples(const geom::NurbsCurve3d& edge) {
+    const auto [e0, e1] = edge.domain();
+    std::vector<Eigen::Vector3d> samples(kEdgeSamples + 1);
+    for (int k = 0; k <= kEdgeSamples; ++k) samples[k] = edge.evaluate(e0 + (e1 - e0) * k / kEdgeSamples);
+    return samples;
+}
+
+// Largest `distance(P)` over P = S(c(t)) at `steps` + 1 equal steps of c's domain.
+template <class Distance>
+double largest_over_pcurve(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, int steps,
+                           const Distance& distance) {
+    const auto [t0, t1] = c.domain();
+    double gap = 0.0;
+    for (int k = 0; k <= steps; ++k) {
+        const Eigen::Vector2d uv = c.evaluate(t0 + (t1 - t0) * k / steps);
+        gap = std::max(gap, distance(S.evaluate(uv.x(), uv.y())));
+    }
+    return gap;
+}
+
 }  // namespace
 
 double pcurve_edge_gap_fine(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
                             const geom::NurbsCurve3d& edge) {
     const auto [e0, e1] = edge.domain();
-    std::vector<Eigen::Vector3d> samples(kEdgeSamples + 1);
-    for (int k = 0; k <= kEdgeSamples; ++k) samples[k] = edge.evaluate(e0 + (e1 - e0) * k / kEdgeSamples);
-    const auto [t0, t1] = c.domain();
-    double gap = 0.0;
-    for (int k = 0; k <= kFineGapSamples; ++k) {
-        const Eigen::Vector2d uv = c.evaluate(t0 + (t1 - t0) * k / kFineGapSamples);
-        const Eigen::Vector3d p = S.evaluate(uv.x(), uv.y());
+    const std::vector<Eigen::Vector3d> samples = edge_samples(edge);
+    return largest_over_pcurve(S, c, kFineGapSamples, [&](const Eigen::Vector3d& p) {
         int nearest = 0;
         for (int j = 1; j <= kEdgeSamples; ++j)
             if ((samples[j] - p).squaredNorm() < (samples[nearest] - p).squaredNorm()) nearest = j;
-        gap = std::max(gap, distance_to_curve(edge, p, e0 + (e1 - e0) * nearest / kEdgeSamples));
-    }
-    return gap;
+        return distance_to_curve(edge, p, e0 + (e1 - e0) * nearest / kEdgeSamples);
+    });
 }
 
 double pcurve_edge_gap(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c, const geom::NurbsCurve3d& edge) {
-    const auto [e0, e1] = edge.domain();
-    std::vector<Eigen::Vector3d> polyline(kEdgeSamples + 1);
-    for (int k = 0; k <= kEdgeSamples; ++k) polyline[k] = edge.evaluate(e0 + (e1 - e0) * k / kEdgeSamples);
-    const auto [t0, t1] = c.domain();
-    double gap = 0.0;
-    for (int k = 0; k <= kGapSamples; ++k) {
-        const Eigen::Vector2d uv = c.evaluate(t0 + (t1 - t0) * k / kGapSamples);
-        const Eigen::Vector3d p = S.evaluate(uv.x(), uv.y());
+    const std::vector<Eigen::Vector3d> polyline = edge_samples(edge);
+    return largest_over_pcurve(S, c, kGapSamples, [&](const Eigen::Vector3d& p) {
         double nearest = std::numeric_limits<double>::infinity();
         for (int j = 0; j < kEdgeSamples; ++j)
             nearest = std::min(nearest, point_segment_distance(p, polyline[j], polyline[j + 1]));
-        gap = std::max(gap, nearest);
-    }
-    return gap;
+        return nearest;
+    });
 }
 
 }  // namespace trimkit::tess

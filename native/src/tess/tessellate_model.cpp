@@ -516,6 +516,15 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
     return out;
 }
 
+// The report of an edge whose 3D curve lies `gap` from its faces' trims (> T).
+std::string edge_curve_gap_warning(int edge, int face_a, int face_b, double gap, double tolerance) {
+    return "edge " + std::to_string(edge) + " (faces " + std::to_string(face_a) + " and " + std::to_string(face_b) +
+           "): the file's 3D curve lies " + geom::format_value(gap) + " from the faces' trims, more than the " +
+           "tolerance " + geom::format_value(tolerance) +
+           "; the mesh follows the faces, so a measure that takes the edge's curve for their boundary (as Open "
+           "CASCADE's does, within the edge's own tolerance) finds up to that there";
+}
+
 // One pass over the model, face f's trims and cells at scales.trim[f] and
 // scales.cell[f] times their share of the tolerance (a shared edge's trims at the
 // smaller of its faces'); *areas gets each meshed face's area and the areas its
@@ -583,12 +592,8 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     const double user_tolerance = options.tolerance / (1.0 - kWeldShare);  // the pass gets face_tolerance
     for (int e : shared)
         if (curve_gap[e] > user_tolerance)
-            result.warnings.push_back(
-                "edge " + std::to_string(e) + " (faces " + std::to_string(first[e].face) + " and " +
-                std::to_string(second[e].face) + "): the file's 3D curve lies " + geom::format_value(curve_gap[e]) +
-                " from the faces' trims, more than the tolerance " + geom::format_value(user_tolerance) +
-                "; the mesh follows the faces, so a measure that takes the edge's curve for their boundary (as "
-                "Open CASCADE's does, within the edge's own tolerance) finds up to that there");
+            result.warnings.push_back(edge_curve_gap_warning(e, first[e].face, second[e].face, curve_gap[e],
+                                                             user_tolerance));
     std::vector<std::optional<TrimPolyline>> edge_polyline(model.edges.size());
     std::vector<std::vector<Eigen::Vector3d>> edge_points(model.edges.size());
     mesh::parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {

@@ -98,18 +98,28 @@ TEST(ReadStep, MissingOrBrokenFileIsReadError) {
     std::filesystem::remove(bad);
 }
 
+std::string file_text(const std::string& path) {
+    std::ifstream in(path);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// `text` written to `name` in the temporary folder; its path.
+std::string temp_file(const std::string& name, const std::string& text) {
+    const std::string path = (std::filesystem::temp_directory_path() / name).string();
+    std::ofstream(path) << text;
+    return path;
+}
+
 // One damaged type name (VERTEX_POINT -> VERTEX_(OINT) made OCCT 7.6 dereference a null
 // handle during the transfer and killed the process; now it is a read error. Then a
 // good file still reads (the process's signal handlers are back in place).
 TEST(ReadStep, DamagedEntityIsReadErrorNotACrash) {
     REQUIRE_STEP_FILE(path, "xr1-tc-nut.stp");
-    std::ifstream in(path);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text = file_text(path);
     const std::size_t at = text.find("#20=VERTEX_POINT");
     ASSERT_NE(at, std::string::npos);
     text.replace(at, 16, "#20=VERTEX_(OINT");
-    const std::string bad = (std::filesystem::temp_directory_path() / "trimkit_damaged_nut.stp").string();
-    std::ofstream(bad) << text;
+    const std::string bad = temp_file("trimkit_damaged_nut.stp", text);
     EXPECT_THROW(read_step(bad), geom::ReadError);
     std::filesystem::remove(bad);
     EXPECT_EQ(read_step(path).faces.size(), 8u);
@@ -120,8 +130,7 @@ TEST(ReadStep, DamagedEntityIsReadErrorNotACrash) {
 // refused before OCCT sees it, naming the line of the second definition.
 TEST(ReadStep, EntityDefinedTwiceIsReadErrorWithItsLine) {
     REQUIRE_STEP_FILE(path, "xr1-tc-nut.stp");
-    std::ifstream in(path);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text = file_text(path);
     const std::size_t at = text.find("#20=VERTEX_POINT");
     ASSERT_NE(at, std::string::npos);
     const std::string definition = text.substr(at, text.find('\n', at) + 1 - at);
@@ -129,8 +138,7 @@ TEST(ReadStep, EntityDefinedTwiceIsReadErrorWithItsLine) {
     ASSERT_NE(end, std::string::npos);
     text.insert(end, definition);
     const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
-    const std::string bad = (std::filesystem::temp_directory_path() / "trimkit_twice_nut.stp").string();
-    std::ofstream(bad) << text;
+    const std::string bad = temp_file("trimkit_twice_nut.stp", text);
     try {
         read_step(bad);
         ADD_FAILURE() << "no ReadError";

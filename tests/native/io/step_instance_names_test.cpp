@@ -19,6 +19,17 @@ void check(const std::string& text) {
     check_step_instance_names(in, "t.stp");
 }
 
+// The ReadError check() throws on `text` (a failure and an empty error if none).
+geom::ReadError error_of(const std::string& text) {
+    try {
+        check(text);
+    } catch (const geom::ReadError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no ReadError";
+    return geom::ReadError("", 0, "");
+}
+
 const std::string kHeader =
     "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('a #9 = b'),'2;1');\nENDSEC;\nDATA;\n";  // lines 1-5
 
@@ -37,14 +48,10 @@ TEST(StepInstanceNames, SecondDefinitionIsNamedWithItsLine) {
                              "#2 = DIRECTION('',(0.,0.,1.));\n"        // line 7
                              "   #1 = CARTESIAN_POINT('',(1.,0.,0.));\n"  // line 8
                              "ENDSEC;\n";
-    try {
-        check(text);
-        FAIL() << "no ReadError";
-    } catch (const geom::ReadError& e) {
-        EXPECT_EQ(e.file(), "t.stp");
-        EXPECT_EQ(e.line(), 8);
-        EXPECT_NE(e.reason().find("entity #1 is defined twice (first on line 6)"), std::string::npos) << e.what();
-    }
+    const geom::ReadError e = error_of(text);
+    EXPECT_EQ(e.file(), "t.stp");
+    EXPECT_EQ(e.line(), 8);
+    EXPECT_NE(e.reason().find("entity #1 is defined twice (first on line 6)"), std::string::npos) << e.what();
 }
 
 // The fuzzer's file: a string broken by control characters and a line break in the
@@ -57,13 +64,9 @@ TEST(StepInstanceNames, DamagedStringDoesNotHideALaterDuplicate) {
                              "#45 = PRODUCT_DEFINITION_SHAPE('','',#116);\n"
                              "#44 = PRODUCT_DEFINITION_SHAPE('','',#117);\n"  // line 9
                              "ENDSEC;\n";
-    try {
-        check(text);
-        FAIL() << "no ReadError";
-    } catch (const geom::ReadError& e) {
-        EXPECT_EQ(e.line(), 9);
-        EXPECT_NE(e.reason().find("#44"), std::string::npos) << e.what();
-    }
+    const geom::ReadError e = error_of(text);
+    EXPECT_EQ(e.line(), 9);
+    EXPECT_NE(e.reason().find("#44"), std::string::npos) << e.what();
 }
 
 // The earliest second definition is the one reported; names of 19 digits and more are
@@ -72,13 +75,9 @@ TEST(StepInstanceNames, EarliestDuplicateIsReported) {
     const std::string text = kHeader +
                              "#7 = A();\n#8 = B();\n#8 = C();\n#7 = D();\n"  // lines 6-9
                              "#1234567890123456789 = E();\n#1234567890123456789 = F();\n";
-    try {
-        check(text);
-        FAIL() << "no ReadError";
-    } catch (const geom::ReadError& e) {
-        EXPECT_EQ(e.line(), 8);
-        EXPECT_NE(e.reason().find("entity #8 is defined twice (first on line 7)"), std::string::npos) << e.what();
-    }
+    const geom::ReadError e = error_of(text);
+    EXPECT_EQ(e.line(), 8);
+    EXPECT_NE(e.reason().find("entity #8 is defined twice (first on line 7)"), std::string::npos) << e.what();
     EXPECT_NO_THROW(check(kHeader + "#1234567890123456789 = E();\n#1234567890123456789 = F();\n"));
 }
 
