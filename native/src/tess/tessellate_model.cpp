@@ -519,10 +519,10 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
 // The report of an edge whose 3D curve lies `gap` from its faces' trims (> T).
 std::string edge_curve_gap_warning(int edge, int face_a, int face_b, double gap, double tolerance) {
     return "edge " + std::to_string(edge) + " (faces " + std::to_string(face_a) + " and " + std::to_string(face_b) +
-           "): the file's 3D curve lies " + geom::format_value(gap) + " from the faces' trims, more than the " +
+           "): the file's 3D curve lies " + geom::format_value(gap) + " from the faces' trims (more than the " +
            "tolerance " + geom::format_value(tolerance) +
-           "; the mesh follows the faces, so a measure that takes the edge's curve for their boundary (as Open "
-           "CASCADE's does, within the edge's own tolerance) finds up to that there";
+           ": the mesh follows the faces, so a measure that takes the edge's curve for their boundary, as Open "
+           "CASCADE's does within the edge's own tolerance, finds up to that there)";
 }
 
 // One pass over the model, face f's trims and cells at scales.trim[f] and

@@ -126,7 +126,7 @@ TEST(GappedEdge, AnEdgeCurveOffBothFacesIsReported) {
         ASSERT_TRUE(r.failed_faces.empty());
         int reported = 0;
         for (const std::string& w : r.warnings)
-            if (w.find("edge 0 (faces 0 and 1): the file's 3D curve lies 0.025 from the faces' trims, more than the "
+            if (w.find("edge 0 (faces 0 and 1): the file's 3D curve lies 0.025 from the faces' trims (more than the "
                        "tolerance 0.01") == 0)
                 ++reported;
         EXPECT_EQ(reported, lift > kTolerance ? 1 : 0);
