@@ -62,7 +62,8 @@ double largest_over_pcurve(const geom::NurbsSurface& S, const geom::NurbsCurve2d
 
 double pcurve_edge_gap_fine(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
                             const geom::NurbsCurve3d& edge) {
-    const auto [e0, e1] = edge.domain();
+    const auto domain = edge.domain();
+    const double e0 = domain.first, e1 = domain.second;
     const std::vector<Eigen::Vector3d> samples = edge_samples(edge);
     return largest_over_pcurve(S, c, kFineGapSamples, [&](const Eigen::Vector3d& p) {
         int nearest = 0;
