@@ -148,6 +148,46 @@ void append(Mesh& into, const Mesh& part) {
         into.face_colors.push_back(part.face_colors[f]);
 }
 
+std::vector<Mesh> split_by_face_group(const Mesh& mesh, const std::vector<int>& group_of_face, int groups) {
+    if (!mesh.has_face_ids() && !mesh.triangles.empty())
+        throw InvalidInput("split_by_face_group: the mesh has no face ids");
+    std::vector<Mesh> parts(std::max(groups, 0));
+    std::vector<std::vector<std::size_t>> triangles_of(parts.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const std::int32_t f = mesh.face_ids[t];
+        const int g = f >= 0 && static_cast<std::size_t>(f) < group_of_face.size() ? group_of_face[f] : -1;
+        if (g >= 0 && g < groups) triangles_of[g].push_back(t);
+        else
+            throw InvalidInput("split_by_face_group: triangles[" + std::to_string(t) + "] has face id " +
+                               std::to_string(f) + ", which has no group in [0, " + std::to_string(groups) + ")");
+    }
+    // Per vertex: the part that took it last and its index there (a vertex that
+    // triangles of several parts use is copied into each).
+    std::vector<int> owner(mesh.positions.size(), -1);
+    std::vector<std::int32_t> index(mesh.positions.size(), -1);
+    for (int g = 0; g < groups; ++g) {
+        Mesh& part = parts[g];
+        for (std::size_t t : triangles_of[g]) {
+            std::array<std::int32_t, 3> corners;
+            for (int k = 0; k < 3; ++k) {
+                const std::int32_t v = mesh.triangles[t][k];
+                if (owner[v] != g) {
+                    owner[v] = g;
+                    index[v] = static_cast<std::int32_t>(part.positions.size());
+                    part.positions.push_back(mesh.positions[v]);
+                    if (mesh.has_normals()) part.normals.push_back(mesh.normals[v]);
+                    if (mesh.has_uvs()) part.uvs.push_back(mesh.uvs[v]);
+                }
+                corners[k] = index[v];
+            }
+            part.triangles.push_back(corners);
+            part.face_ids.push_back(mesh.face_ids[t]);
+        }
+        part.face_colors = mesh.face_colors;
+    }
+    return parts;
+}
+
 double surface_area(const Mesh& mesh) {
     double area = 0.0;
     for (const auto& t : mesh.triangles) {

@@ -71,6 +71,14 @@ void validate(const Mesh& mesh);
 // the same optional arrays, or InvalidInput is thrown and `into` is unchanged.
 void append(Mesh& into, const Mesh& part);
 
+// Splits `mesh` (with face ids) by a group per face id: part k holds the triangles
+// whose face id f has group_of_face[f] == k, in their order, with the vertices they
+// use (renumbered in order of first use) and all face colours. Flagged edges are
+// dropped (flag the parts, or the mesh they are appended back into). Throws
+// InvalidInput for a mesh without face ids, or a face id outside group_of_face or
+// whose group is outside [0, groups).
+std::vector<Mesh> split_by_face_group(const Mesh& mesh, const std::vector<int>& group_of_face, int groups);
+
 // Sum of the triangles' areas (model units squared).
 double surface_area(const Mesh& mesh);
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geom/error.h"
+#include "geom/segment_distance.h"
 #include "tess/derivative_bounds.h"
 #include "tess/homogeneous_bezier.h"
 #include "tess/lift_trim_curve.h"
@@ -42,13 +43,10 @@ std::vector<Eigen::Vector3d> homogeneous_piece(const geom::NurbsCurve2d& c, doub
 double line_bound(const std::vector<Eigen::Vector4d>& P) {
     for (const auto& h : P)
         if (!(h.w() > 0.0)) return kInfinity;
-    const Eigen::Vector3d a = project(P.front()), b = project(P.back()), ab = b - a;
-    const double len2 = ab.squaredNorm();
+    const Eigen::Vector3d a = project(P.front()), b = project(P.back());
     double e = 0.0, w_in = 0.0;
     for (size_t i = 1; i + 1 < P.size(); ++i) {
-        const Eigen::Vector3d x = project(P[i]);
-        const double lambda = len2 > 0.0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-        e = std::max(e, (x - a - lambda * ab).norm());
+        e = std::max(e, geom::segment_distance(Eigen::Vector3d(project(P[i])), a, b));
         w_in = std::max(w_in, P[i].w());
     }
     if (e == 0.0) return 0.0;
@@ -87,6 +85,19 @@ double chord_parameter_bound(const std::vector<Eigen::Vector3d>& h) {
                                  " points (the curve is too long on its surface for the tolerance)");
 }
 
+// The projected control points of a part, or none when a weight is not positive (no
+// convex hull property).
+SegmentHull hull(const std::vector<Eigen::Vector4d>& P3, const std::vector<Eigen::Vector3d>& P2) {
+    SegmentHull h;
+    for (const auto& p : P3)
+        if (!(p.w() > 0.0)) return {};
+    for (const auto& p : P2)
+        if (!(p.z() > 0.0)) return {};
+    for (const auto& p : P3) h.xyz.push_back(project(p));
+    for (const auto& p : P2) h.uv.push_back(project(p));
+    return h;
+}
+
 // Midpoint subdivision of one lifted piece until each part's bound is within the
 // budget. An explicit stack, not recursion: the depth reaches kMaxSubdivisionDepth
 // on hostile curves, and under ASan every distinct recursive call stack of an
@@ -97,6 +108,7 @@ struct Subdivider {
     std::size_t limit;   // most pieces accepted before the curve is given up
     mesh::Deadline* deadline;    // checked per part; nullptr: none
     std::vector<double>* s_out;  // right ends of accepted pieces, in order
+    std::vector<SegmentHull>* hulls_out;  // and their control points
 
     struct Part {
         std::vector<Eigen::Vector4d> P3;
@@ -116,6 +128,7 @@ struct Subdivider {
             if (e <= budget || part.depth >= kMaxSubdivisionDepth) {
                 if (s_out->size() >= limit) throw_too_many_points();
                 s_out->push_back(part.sb);
+                hulls_out->push_back(hull(part.P3, part.P2));
                 continue;
             }
             const double sm = 0.5 * (part.sa + part.sb);
@@ -168,7 +181,8 @@ std::vector<double> uniform_steps(long n) {
 }  // namespace
 
 TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
-                                    double tolerance, TrimMethod method, mesh::Deadline* deadline) {
+                                    double tolerance, TrimMethod method, mesh::Deadline* deadline,
+                                    TrimSimplification simplification) {
     if (!std::isfinite(tolerance) || !(tolerance > 0.0))
         throw geom::InvalidInput("approximate_trim_curve: tolerance = " +
                                  geom::format_value(tolerance) + "; expected a finite value > 0");
@@ -181,11 +195,13 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
         const double budget = kTrimGamma * tolerance;
         // An affine S maps the uv chord onto the 3D chord, so e_line bounds both.
         const bool affine = S.is_affine();
+        std::vector<SegmentHull> hulls;  // per segment of `out`
         for (const LiftedPiece& piece : lift_trim_curve(S, c)) {
             if (deadline) deadline->check_now("trim curve approximation");
             if (!piece.exact) {
                 const long n = yang_steps(S, c, piece.t0, piece.t1, budget);
                 append_points(S, c, piece.t0, piece.t1, uniform_steps(n), &out, deadline);
+                hulls.resize(out.points.size() - 1);
                 continue;
             }
             const std::vector<Eigen::Vector3d> P2 = homogeneous_piece(c, piece.t0, piece.t1);
@@ -195,13 +211,17 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
             std::vector<double> s_values;
             const std::size_t limit = kMaxTrimPoints - out.points.size();
             const double speed = affine ? 0.0 : std::hypot(Ms.Mu, Ms.Mv);
-            Subdivider{budget, speed, limit, deadline, &s_values}.run(piece.P, P2);
+            Subdivider{budget, speed, limit, deadline, &s_values, &hulls}.run(piece.P, P2);
             append_points(S, c, piece.t0, piece.t1, s_values, &out, deadline);
         }
         const geom::NurbsCurve2d::Box box = c.control_box();
         const SurfaceDerivativeBounds Ms =
             surface_derivative_bounds(S, Eigen::AlignedBox2d(box.min(), box.max()));
-        simplify_trim_polyline(&out, (1.0 - kTrimGamma) * tolerance, affine ? 0.0 : std::hypot(Ms.Mu, Ms.Mv));
+        const double speed = affine ? 0.0 : std::hypot(Ms.Mu, Ms.Mv);
+        if (simplification == TrimSimplification::kHulls)
+            simplify_trim_polyline(&out, hulls, S, tolerance, speed);
+        else
+            simplify_trim_polyline(&out, (1.0 - kTrimGamma) * tolerance, speed);
         break;
     }
     case TrimMethod::kYang: {

@@ -40,7 +40,7 @@ constexpr std::size_t kMaxTrimPoints = std::size_t(1) << 19;
 //    segment stay within tolerance too (departure from [Balazs], which bounds the
 //    3D chord only). On an affine S (NurbsSurface::is_affine: plane patches) S maps
 //    the uv chord onto the 3D chord, so e_uv = 0 there. Then simplify_trim_polyline
-//    with (1 - γ)·tol.
+//    with (1 - γ)·tol, or against the pieces' hulls (`simplification` below).
 //    Inexact lifts (d3d > kMaxLiftDegree) use the kYang steps with γ·tol.
 //  kYang [Yang] eq. 9-11: per piece of trim_curve_breaks, dt = sqrt(tol / (M1 + M2)),
 //    M1 = (M^u + M^v) M^tt / 8, M2 = (M^uu (M^t_u)² + 2 M^uv M^t_u M^t_v + M^vv (M^t_v)²) / 8,
@@ -52,7 +52,17 @@ constexpr std::size_t kMaxTrimPoints = std::size_t(1) << 19;
 // Throws InvalidInput if tolerance is not finite and > 0.
 // `deadline`: checked per lifted piece and per point evaluated (up to kMaxStepsPerPiece a
 // piece); throws mesh::DeadlineExceeded once it has passed.
+//
+// kBezier3d's simplification (`simplification`):
+//  kHulls: simplify_trim_polyline against the subdivided pieces' control hulls with the
+//    whole tolerance (chords across knot lines and pieces; fewest points);
+//  kPoints: [Balazs] Sec. 5.1 as written, the points simplified with (1 - γ)·tol. Two
+//    faces that approximate one curve each on their own (an edge the file does not
+//    share, or whose faces lie too far apart to share one polyline) place their points
+//    alike along it, so the join can weld them; long chords of each would not meet.
+enum class TrimSimplification { kHulls, kPoints };
 TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
-                                    double tolerance, TrimMethod method, mesh::Deadline* deadline = nullptr);
+                                    double tolerance, TrimMethod method, mesh::Deadline* deadline = nullptr,
+                                    TrimSimplification simplification = TrimSimplification::kHulls);
 
 }  // namespace trimkit::tess

@@ -10,6 +10,7 @@
 #include "geom/error.h"
 #include "tess/bezier_patch.h"
 #include "tess/bilinear_error.h"
+#include "tess/block_error.h"
 #include "tess/derivative_bounds.h"
 
 namespace trimkit::tess {
@@ -225,48 +226,64 @@ struct Node {
     std::vector<int> segments;  // trim segments meeting the node (trims.active)
 };
 
+// The trim segments of `from` that meet the (stretched) rectangle r, appended to out.
+void segments_meeting(const TrimSegments& trims, const Cell& r, const std::vector<int>& from,
+                      std::vector<int>& out) {
+    for (int s : from) {
+        mesh::check_deadline(trims.deadline, "kd subdivision");
+        if (meets(trims.segments[s], r.u0, r.u1, r.v0, r.v1, trims.margin)) out.push_back(s);
+    }
+}
+
+std::vector<int> all_segments(const TrimSegments& trims) {
+    std::vector<int> all(trims.segments.size());
+    for (size_t s = 0; s < all.size(); ++s) all[s] = static_cast<int>(s);
+    return all;
+}
+
+// The bound a node's cell must meet (kd_subdivision.h: trim-aware tolerances), or
+// empty when no trim meets it and it lies outside the loops: a leaf as it is, which
+// trim_cells drops. `r`: the node's stretched rectangle.
+std::optional<double> node_tolerance(TrimSegments& trims, const std::vector<int>& segments, const Cell& r) {
+    if (!trims.active) return trims.tolerance;
+    if (segments.empty()) {
+        if (!inside_loops(trims, 0.5 * (r.u0 + r.u1), 0.5 * (r.v0 + r.v1))) return std::nullopt;
+        return trims.tolerance;
+    }
+    const double harmless = trims.total_tolerance - trims.tolerance;
+    return std::min(trims.tolerance, std::max(trims.boundary_tolerance,
+                                              trims.total_tolerance - crossing_offset(trims, segments, r, harmless)));
+}
+
+void add_leaf(const Cell& cell, double tolerance, std::vector<Cell>& leaves) {
+    leaves.push_back(cell);
+    if (leaves.size() > kMaxCells)
+        throw geom::NumericalFailure("kd_subdivision: more than " + std::to_string(kMaxCells) +
+                                     " cells needed for tolerance " + format_value(tolerance));
+}
+
+// Splits `root` (a piece of one Bezier patch, with the trim segments that meet it) at
+// the point of largest bilinear error until its cells are within their bounds.
 // `stretch`: the (u,v) rectangle a cell covers after kd_subdivision stretches the
 // domain's sides to the box's.
 template <class Stretch>
-void subdivide(const BezierPatch& patch, TrimSegments& trims, const Stretch& stretch,
-               ErrorMode mode, double min_du, double min_dv, std::vector<Cell>& leaves) {
-    auto meeting = [&](const BezierPatch& p, const std::vector<int>& from, std::vector<int>& out) {
-        const Cell r = stretch(Cell{p.u0, p.u1, p.v0, p.v1});
-        for (int s : from) {
-            mesh::check_deadline(trims.deadline, "kd subdivision");
-            if (meets(trims.segments[s], r.u0, r.u1, r.v0, r.v1, trims.margin)) out.push_back(s);
-        }
-    };
+void subdivide(Node root, TrimSegments& trims, const Stretch& stretch, ErrorMode mode, double min_du,
+               double min_dv, std::vector<Cell>& leaves) {
     // Explicit stack: deep kd-trees on fine tolerances must not overflow the call stack.
-    std::vector<Node> stack(1);
-    stack[0].patch = patch;
-    if (trims.active) {
-        std::vector<int> all(trims.segments.size());
-        for (size_t s = 0; s < all.size(); ++s) all[s] = static_cast<int>(s);
-        meeting(patch, all, stack[0].segments);
-    }
+    std::vector<Node> stack;
+    stack.push_back(std::move(root));
     while (!stack.empty()) {
         mesh::check_deadline(trims.deadline, "kd subdivision");
         Node node = std::move(stack.back());
         stack.pop_back();
         const BezierPatch& current = node.patch;
-        double tolerance = trims.tolerance;
-        if (trims.active && node.segments.empty()) {
-            // No trim meets the cell: wholly kept or wholly dropped by trim_cells.
-            const Cell r = stretch(Cell{current.u0, current.u1, current.v0, current.v1});
-            if (!inside_loops(trims, 0.5 * (r.u0 + r.u1), 0.5 * (r.v0 + r.v1))) {
-                leaves.push_back({current.u0, current.u1, current.v0, current.v1});
-                continue;
-            }
-        } else if (trims.active) {
-            const Cell r = stretch(Cell{current.u0, current.u1, current.v0, current.v1});
-            tolerance = std::min(trims.tolerance,
-                                 std::max(trims.boundary_tolerance,
-                                          trims.total_tolerance -
-                                              crossing_offset(trims, node.segments, r,
-                                                              trims.total_tolerance - trims.tolerance)));
+        const Cell cell{current.u0, current.u1, current.v0, current.v1};
+        const std::optional<double> tolerance = node_tolerance(trims, node.segments, stretch(cell));
+        if (!tolerance) {
+            leaves.push_back(cell);
+            continue;
         }
-        const BilinearError error = cell_error(trims, current, mode, tolerance);
+        const BilinearError error = cell_error(trims, current, mode, *tolerance);
         if (!std::isfinite(error.bound))
             throw geom::NumericalFailure(
                 "kd_subdivision: non-finite bilinear error on cell [" + format_value(current.u0) +
@@ -274,13 +291,8 @@ void subdivide(const BezierPatch& patch, TrimSegments& trims, const Stretch& str
                 format_value(current.v1) + "]");
         const bool can_u = current.u1 - current.u0 > min_du;
         const bool can_v = current.v1 - current.v0 > min_dv;
-        if (error.bound <= tolerance || (!can_u && !can_v)) {
-            leaves.push_back({current.u0, current.u1, current.v0, current.v1});
-            if (leaves.size() > kMaxCells)
-                throw geom::NumericalFailure("kd_subdivision: more than " +
-                                             std::to_string(kMaxCells) +
-                                             " cells needed for tolerance " +
-                                             format_value(tolerance));
+        if (error.bound <= *tolerance || (!can_u && !can_v)) {
+            add_leaf(cell, *tolerance, leaves);
             continue;
         }
         bool in_u = error.split_in_u;
@@ -296,11 +308,108 @@ void subdivide(const BezierPatch& patch, TrimSegments& trims, const Stretch& str
         first.patch = std::move(halves.first);
         second.patch = std::move(halves.second);
         if (trims.active) {
-            meeting(first.patch, node.segments, first.segments);
-            meeting(second.patch, node.segments, second.segments);
+            segments_meeting(trims, stretch(Cell{first.patch.u0, first.patch.u1, first.patch.v0, first.patch.v1}),
+                             node.segments, first.segments);
+            segments_meeting(trims, stretch(Cell{second.patch.u0, second.patch.u1, second.patch.v0, second.patch.v1}),
+                             node.segments, second.segments);
         }
         stack.push_back(std::move(second));
         stack.push_back(std::move(first));
+    }
+}
+
+// The parts of the surface's Bezier patches inside the box, as a grid: part(iu, iv)
+// spans [u[iu], u[iu + 1]] x [v[iv], v[iv + 1]].
+struct Part {
+    const geom::NurbsSurface* bezier;
+    double u0, u1, v0, v1;
+};
+struct PartGrid {
+    std::vector<double> u, v;  // the parts' sides, ascending
+    std::vector<int> index;    // part per (iu, iv), iu * (v.size() - 1) + iv
+    // The part whose span holds the rectangle c (which crosses no side).
+    int holding(const Cell& c) const {
+        const auto iu = std::upper_bound(u.begin(), u.end(), c.u0) - u.begin() - 1;
+        const auto iv = std::upper_bound(v.begin(), v.end(), c.v0) - v.begin() - 1;
+        return index[iu * (v.size() - 1) + iv];
+    }
+};
+
+PartGrid part_grid(const std::vector<Part>& parts) {
+    PartGrid g;
+    for (const Part& p : parts) g.u.insert(g.u.end(), {p.u0, p.u1}), g.v.insert(g.v.end(), {p.v0, p.v1});
+    for (auto* x : {&g.u, &g.v}) {
+        std::sort(x->begin(), x->end());
+        x->erase(std::unique(x->begin(), x->end()), x->end());
+    }
+    g.index.assign((g.u.size() - 1) * (g.v.size() - 1), -1);
+    for (size_t k = 0; k < parts.size(); ++k) {
+        const auto iu = std::lower_bound(g.u.begin(), g.u.end(), parts[k].u0) - g.u.begin();
+        const auto iv = std::lower_bound(g.v.begin(), g.v.end(), parts[k].v0) - g.v.begin();
+        g.index[iu * (g.v.size() - 1) + iv] = static_cast<int>(k);
+    }
+    return g;
+}
+
+// The sides of `sides` strictly inside (lo, hi): [first, last) indices.
+std::pair<long, long> sides_inside(const std::vector<double>& sides, double lo, double hi) {
+    return {std::upper_bound(sides.begin(), sides.end(), lo) - sides.begin(),
+            std::lower_bound(sides.begin(), sides.end(), hi) - sides.begin()};
+}
+
+// Cells over several knot spans (block_error.h): from the whole grid of parts, a block
+// within its bound is one cell; one that is not splits at its middle knot line across
+// the direction whose term is larger (at its middle where no knot line crosses that
+// way); a block within one span in both directions is one Bezier patch's piece, which
+// `subdivide` takes on. Not for surfaces of revolution: their exact bound is per patch.
+template <class Stretch>
+void subdivide_blocks(const geom::NurbsSurface& surface, const std::vector<Part>& parts, TrimSegments& trims,
+                      const Stretch& stretch, ErrorMode mode, double min_du, double min_dv,
+                      std::vector<Cell>& leaves) {
+    const PartGrid grid = part_grid(parts);
+    struct Block {
+        Cell cell;
+        std::vector<int> segments;
+    };
+    std::vector<Block> stack(1);
+    stack[0].cell = Cell{grid.u.front(), grid.u.back(), grid.v.front(), grid.v.back()};
+    if (trims.active) segments_meeting(trims, stretch(stack[0].cell), all_segments(trims), stack[0].segments);
+    while (!stack.empty()) {
+        mesh::check_deadline(trims.deadline, "kd subdivision");
+        Block block = std::move(stack.back());
+        stack.pop_back();
+        const Cell c = block.cell;
+        const auto [u_first, u_last] = sides_inside(grid.u, c.u0, c.u1);
+        const auto [v_first, v_last] = sides_inside(grid.v, c.v0, c.v1);
+        if (u_first == u_last && v_first == v_last) {
+            const Part& p = parts[grid.holding(c)];
+            Node node{restrict_patch(bezier_patch(*p.bezier), c.u0, c.u1, c.v0, c.v1), std::move(block.segments)};
+            subdivide(std::move(node), trims, stretch, mode, min_du, min_dv, leaves);
+            continue;
+        }
+        const std::optional<double> tolerance = node_tolerance(trims, block.segments, stretch(c));
+        if (!tolerance) {
+            leaves.push_back(c);
+            continue;
+        }
+        const BlockError error = block_error(surface, Eigen::AlignedBox2d(Eigen::Vector2d(c.u0, c.v0),
+                                                                          Eigen::Vector2d(c.u1, c.v1)));
+        if (error.bound <= *tolerance) {
+            add_leaf(c, *tolerance, leaves);
+            continue;
+        }
+        bool in_u = std::isfinite(error.bound) ? error.u_term >= error.v_term : u_last - u_first >= v_last - v_first;
+        if (in_u ? (c.u1 - c.u0 <= min_du) : (c.v1 - c.v0 <= min_dv)) in_u = !in_u;
+        const auto [first, last] = in_u ? std::make_pair(u_first, u_last) : std::make_pair(v_first, v_last);
+        const std::vector<double>& sides = in_u ? grid.u : grid.v;
+        const double at = first < last ? sides[(first + last) / 2] : in_u ? 0.5 * (c.u0 + c.u1) : 0.5 * (c.v0 + c.v1);
+        Block halves[2] = {{c, {}}, {c, {}}};
+        (in_u ? halves[0].cell.u1 : halves[0].cell.v1) = at;
+        (in_u ? halves[1].cell.u0 : halves[1].cell.v0) = at;
+        for (Block& half : halves)
+            if (trims.active) segments_meeting(trims, stretch(half.cell), block.segments, half.segments);
+        stack.push_back(std::move(halves[1]));
+        stack.push_back(std::move(halves[0]));
     }
 }
 
@@ -326,10 +435,6 @@ CellGrid subdivide_box(const geom::NurbsSurface& surface, const Eigen::AlignedBo
     // knot 2pi lies 1e-9 inside the box) would give a row of cells thinner than the
     // margin, where a trim along the line makes triangles flat in (u,v) that stand
     // across the surface in 3D (torus_hole_on_seams_brep.igs: area +0.44 %).
-    struct Part {
-        const geom::NurbsSurface* bezier;
-        double u0, u1, v0, v1;
-    };
     const double sliver_u = kSideSliver * (bu1 - bu0), sliver_v = kSideSliver * (bv1 - bv0);
     const std::vector<geom::NurbsSurface> beziers = surface.bezier_patches();
     std::vector<Part> parts;
@@ -358,9 +463,15 @@ CellGrid subdivide_box(const geom::NurbsSurface& surface, const Eigen::AlignedBo
 
     CellGrid grid;
     grid.box = box;
-    for (const Part& p : parts) {
-        const BezierPatch patch = restrict_patch(bezier_patch(*p.bezier), p.u0, p.u1, p.v0, p.v1);
-        subdivide(patch, trims, stretch, mode, min_du, min_dv, grid.cells);
+    if (!trims.shape && parts.size() > 1) {
+        subdivide_blocks(surface, parts, trims, stretch, mode, min_du, min_dv, grid.cells);
+    } else {
+        for (const Part& p : parts) {
+            Node node{restrict_patch(bezier_patch(*p.bezier), p.u0, p.u1, p.v0, p.v1), {}};
+            if (trims.active)
+                segments_meeting(trims, stretch(Cell{p.u0, p.u1, p.v0, p.v1}), all_segments(trims), node.segments);
+            subdivide(std::move(node), trims, stretch, mode, min_du, min_dv, grid.cells);
+        }
     }
     if (grid.cells.empty())
         throw geom::InvalidInput("kd_subdivision: (u,v) box [" + format_value(bu0) + ", " +

@@ -5,18 +5,12 @@
 #include <limits>
 #include <vector>
 
+#include "geom/segment_distance.h"
+
 namespace trimkit::tess {
 namespace {
 
 constexpr int kGapSamples = 8, kEdgeSamples = 64;
-
-double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d d = b - a;
-    const double len2 = d.squaredNorm();
-    const double s = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-    return (a + s * d - p).norm();
-}
-
 constexpr int kFootIterations = 20;
 
 // Distance from p to the edge curve, from the parameter s (a sample's) by Newton's
@@ -78,7 +72,7 @@ double pcurve_edge_gap(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
     return largest_over_pcurve(S, c, kGapSamples, [&](const Eigen::Vector3d& p) {
         double nearest = std::numeric_limits<double>::infinity();
         for (int j = 0; j < kEdgeSamples; ++j)
-            nearest = std::min(nearest, point_segment_distance(p, polyline[j], polyline[j + 1]));
+            nearest = std::min(nearest, geom::segment_distance(p, polyline[j], polyline[j + 1]));
         return nearest;
     });
 }

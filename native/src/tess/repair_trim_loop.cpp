@@ -9,6 +9,8 @@
 
 #include <Eigen/Geometry>
 
+#include "geom/segment_distance.h"
+
 #include "mesh/grid_cell.h"
 #include "mesh/triangulate_polygon.h"
 
@@ -84,13 +86,6 @@ constexpr int kMaxBoundaryDepth = 12;
 constexpr int kMaxSampleDivisions = 16;
 constexpr double kMaxGridParts = 2e5;
 
-double segment_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d d = b - a;
-    const double len2 = d.squaredNorm();
-    const double t = len2 > 0.0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-    return (a + t * d - x).norm();
-}
-
 // S along the uv segment a -> b as points after S(a) (S(b) last), halved while the
 // chord's midpoint lies more than `sag` from the surface's.
 void surface_chords(const geom::NurbsSurface& S, const Eigen::Vector2d& a, const Eigen::Vector3d& A,
@@ -157,7 +152,7 @@ PieceExtent piece_extent(const std::vector<PolylinePoint>& P, const geom::NurbsS
                 for (long long dz = -1; dz <= 1; ++dz) {
                     auto it = grid.find({c.x + dx, c.y + dy, c.z + dz});
                     if (it == grid.end()) continue;
-                    for (int k : it->second) best = std::min(best, segment_distance(x, boundary[k], boundary[k + 1]));
+                    for (int k : it->second) best = std::min(best, geom::segment_distance(x, boundary[k], boundary[k + 1]));
                 }
         return best;
     };

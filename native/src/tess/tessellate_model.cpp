@@ -74,7 +74,7 @@ constexpr int kSliverHoleSides = 64;
 constexpr double kAreaShare = 1.5e-3;
 constexpr double kAreaMargin = 0.8;
 constexpr double kMinFaceScale = 1.0 / 64.0;
-constexpr int kAreaRounds = 3;
+constexpr int kAreaRounds = 4;
 // Samples per trim curve and per side of the (u,v) grid for model_diagonal.
 constexpr int kDiagonalCurveSamples = 16, kDiagonalGridSamples = 12;
 
@@ -452,8 +452,12 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
                                                "far off this face, and the mesh follows the edge)");
                     polylines.push_back(std::move(mapped.polyline));
                 } else {
-                    polylines.push_back(
-                        approximate_trim_curve(face.surface, coedge.curve, trim_tol, attempt.method, &deadline));
+                    // A coedge of an edge that is not shared here is welded to its other
+                    // face's own approximation.
+                    const TrimSimplification simplification =
+                        e >= 0 ? TrimSimplification::kPoints : TrimSimplification::kHulls;
+                    polylines.push_back(approximate_trim_curve(face.surface, coedge.curve, trim_tol, attempt.method,
+                                                               &deadline, simplification));
                     polylines.back().edge = e;
                     drop_duplicate_points(polylines.back(), kDuplicatePointShare * options.tolerance);
                 }
@@ -736,23 +740,38 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     return result;
 }
 
-// Joins the faces of a pass's mesh by position: snaps open-boundary vertices within
-// `weld_distance` (never collapsing a triangle, never moving a vertex by more than
-// it), closes T-junctions between faces, flags edges. Vertices stay per face. Only
-// the pass that is kept is joined (the area budget compares the faces' own meshes).
+// Joins the faces of a pass's mesh by position, each part (`groups`: area_groups) on
+// its own: snaps open-boundary vertices within `weld_distance` (never collapsing a
+// triangle, never moving a vertex by more than it), closes T-junctions between faces,
+// flags edges, counts open edges. Vertices stay per face. Parts are not joined to each
+// other: two parts that touch (a nut on a bracket) have their own closed boundaries,
+// and snapping one onto the other left T-junctions inside each (as1-oc-214-mat.stp).
+// Only the pass that is kept is joined (the area budget compares the faces' own meshes).
 void join_pass(TessellationResult& result, const TessellationOptions& options, double weld_distance,
-               const FaceScales& scales) {
+               const FaceScales& scales, const std::vector<std::vector<int>>& groups) {
     const auto start = Clock::now();
     const std::vector<double>& trim_scale = scales.trim;
     const double least_scale =
         trim_scale.empty() ? 1.0 : *std::min_element(trim_scale.begin(), trim_scale.end());
     const int threads = mesh::resolve_threads(options.threads);
-    mesh::Mesh& m = result.mesh;
-    if (m.vertex_count() > 0) {
-        join_faces(m, weld_distance, least_scale * trim_tolerance(options), threads, result.warnings);
-        flag_edges(m, options.angle, threads);
-        result.open_edges = count_position_open_edges(m, threads);
+    std::vector<int> group_of_face(scales.trim.size(), 0);
+    for (size_t g = 0; g < groups.size(); ++g)
+        for (int f : groups[g]) group_of_face[f] = static_cast<int>(g);
+    std::vector<mesh::Mesh> parts =
+        split_by_face_group(result.mesh, group_of_face, std::max<int>(1, static_cast<int>(groups.size())));
+    result.mesh = mesh::Mesh{};
+    result.open_edges = 0;
+    std::vector<std::string> warnings;
+    for (mesh::Mesh& part : parts) {
+        if (part.vertex_count() == 0) continue;
+        join_faces(part, weld_distance, least_scale * trim_tolerance(options), threads, warnings);
+        flag_edges(part, options.angle, threads);
+        result.open_edges += count_position_open_edges(part, threads);
+        mesh::append(result.mesh, part);
     }
+    std::sort(warnings.begin(), warnings.end());
+    warnings.erase(std::unique(warnings.begin(), warnings.end()), warnings.end());
+    result.warnings.insert(result.warnings.end(), warnings.begin(), warnings.end());
     result.seconds.weld = seconds_since(start);
 }
 
@@ -810,7 +829,7 @@ TessellationResult tessellate_sewn(const geom::Model& model, const TessellationO
                                   " face(s) meshed again with finer trims and cells (now " +
                                   geom::format_value(100.0 * worst) + " %)");
     }
-    join_pass(result, face_options, weld_distance, scale);
+    join_pass(result, face_options, weld_distance, scale, groups);
     result.tolerance = options.tolerance;
     return result;
 }

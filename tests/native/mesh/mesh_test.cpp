@@ -144,5 +144,38 @@ TEST(Mesh, SurfaceAreaAndBoundingBoxAtLargeAndSmallScales) {
     EXPECT_EQ(surface_area(Mesh{}), 0.0);
 }
 
+// Four triangles of faces 0, 1, 2, 1 round a fan centre (vertex 0); faces 0 and 2 form
+// group 0, face 1 group 1. Each part takes the vertices its triangles use, the centre
+// copied into both, with their normals and (u,v); face ids and order are kept.
+TEST(Mesh, SplitByFaceGroupRenumbersEachPartsVertices) {
+    Mesh m;
+    for (int k = 0; k < 6; ++k) {
+        m.positions.emplace_back(k, k * k, 0);
+        m.normals.emplace_back(0, 0, 1);
+        m.uvs.emplace_back(k, -k);
+    }
+    m.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}};
+    m.face_ids = {0, 1, 2, 1};
+    const std::vector<Mesh> parts = split_by_face_group(m, {0, 1, 0}, 2);
+    ASSERT_EQ(parts.size(), 2u);
+    EXPECT_EQ(parts[0].triangles, (std::vector<std::array<std::int32_t, 3>>{{0, 1, 2}, {0, 3, 4}}));
+    EXPECT_EQ(parts[0].face_ids, (std::vector<std::int32_t>{0, 2}));
+    EXPECT_EQ(parts[0].positions, (std::vector<Eigen::Vector3d>{m.positions[0], m.positions[1], m.positions[2],
+                                                               m.positions[3], m.positions[4]}));
+    EXPECT_EQ(parts[1].triangles, (std::vector<std::array<std::int32_t, 3>>{{0, 1, 2}, {0, 3, 4}}));
+    EXPECT_EQ(parts[1].face_ids, (std::vector<std::int32_t>{1, 1}));
+    EXPECT_EQ(parts[1].uvs, (std::vector<Eigen::Vector2d>{m.uvs[0], m.uvs[2], m.uvs[3], m.uvs[4], m.uvs[5]}));
+    EXPECT_EQ(parts[1].normals.size(), 5u);
+    EXPECT_NO_THROW(validate(parts[0]));
+    EXPECT_NO_THROW(validate(parts[1]));
+    // A face without a group is an error naming the triangle.
+    try {
+        split_by_face_group(m, {0, 1}, 2);
+        ADD_FAILURE() << "face 2 has no group";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("triangles[2] has face id 2"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace trimkit::mesh

@@ -158,5 +158,45 @@ TEST(ApproximateTrimCurve, OnAPlaneTheSubdivisionBoundsTheChordAlone) {
     EXPECT_GT(dev.chord, 0.25 * kTrimGamma * tol);  // the sagitta of the chosen pieces
 }
 
+// The plane z = 0 over [0,1]^2 as a biquadratic B-spline with knots at 1/4, 1/2, 3/4
+// in u (C^1), or with 1/2 twice (a C^0 line of the parameterisation, the plane unbent).
+geom::NurbsSurface knotted_plane(bool crease) {
+    std::vector<Eigen::Vector3d> P;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) P.emplace_back(0.5 * i, 0.5 * j, 0.0);
+    geom::NurbsSurface S(2, 2, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}, 3, 3, P);
+    S = S.insert_knot_u(0.25).insert_knot_u(0.5).insert_knot_u(0.75);
+    return crease ? S.insert_knot_u(0.5) : S;
+}
+
+// kBezier3d lifts a curve in pieces between the surface's knot lines; the hulls of the
+// pieces let one chord span several (simplify_trim_polyline.h). A straight trim across
+// the plane's knot lines is one chord, and two at a C^0 line, whose crossing stays.
+TEST(ApproximateTrimCurve, HullChordsCrossKnotLinesButNotACrease) {
+    const geom::NurbsCurve2d line(1, {0, 0, 1, 1}, {Eigen::Vector2d(0.1, 0.3), Eigen::Vector2d(0.9, 0.7)});
+    const TrimPolyline smooth = approximate_trim_curve(knotted_plane(false), line, 1e-3, TrimMethod::kBezier3d);
+    EXPECT_EQ(smooth.points.size(), 2u);
+    const TrimPolyline creased = approximate_trim_curve(knotted_plane(true), line, 1e-3, TrimMethod::kBezier3d);
+    ASSERT_EQ(creased.points.size(), 3u);
+    EXPECT_NEAR(creased.points[1].uv.x(), 0.5, 1e-12);
+}
+
+// A circle across the knot lines: the hull chords keep the tolerance against the exact
+// curve and need fewer points than the pieces simplified by their points.
+TEST(ApproximateTrimCurve, HullChordsKeepTheToleranceWithFewerPoints) {
+    const geom::NurbsSurface S = knotted_plane(false);
+    const geom::NurbsCurve2d circle = geom::to_2d(geom::circular_arc(
+        Eigen::Vector3d(0.5, 0.5, 0), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 0.4, 0.0, 2 * test::kPi));
+    for (double tol : {1e-2, 1e-3, 1e-4}) {
+        const TrimPolyline hulls = approximate_trim_curve(S, circle, tol, TrimMethod::kBezier3d);
+        const TrimPolyline points = approximate_trim_curve(S, circle, tol, TrimMethod::kBezier3d, nullptr,
+                                                           TrimSimplification::kPoints);
+        EXPECT_LE(test::polyline_deviation(S, circle, hulls).max(), tol);
+        EXPECT_LT(hulls.points.size(), points.points.size()) << tol;
+        // At least the chords of sagitta tol: n >= pi / acos(1 - tol / r).
+        EXPECT_GE(hulls.points.size() - 1, std::ceil(test::kPi / std::acos(1 - tol / 0.4)));
+    }
+}
+
 }  // namespace
 }  // namespace trimkit::tess

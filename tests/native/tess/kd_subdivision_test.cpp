@@ -59,5 +59,69 @@ TEST(KdSubdivision, TrimAwareTolerancesAndNoWorkOutsideTheLoops) {
                       boundary * (1 + 1e-9));
 }
 
+// x = u, y = v, z = u^2 + v^2 on [0,1]^2 as a biquadratic Bezier patch (z's control
+// values a_i + a_j, a = (0, 0, 1)) with the knots k / spans inserted each way, C^1
+// across them; or plane z = 0 when `flat`.
+geom::NurbsSurface paraboloid(int spans, bool flat = false) {
+    std::vector<Eigen::Vector3d> P;
+    const double a[3] = {0, 0, 1};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) P.emplace_back(0.5 * i, 0.5 * j, flat ? 0.0 : a[i] + a[j]);
+    geom::NurbsSurface S(2, 2, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}, 3, 3, P);
+    for (int k = 1; k < spans; ++k) S = S.insert_knot_u(double(k) / spans).insert_knot_v(double(k) / spans);
+    return S;
+}
+
+bool crosses_knot_line(const Cell& c, int spans) {
+    for (int k = 1; k < spans; ++k) {
+        const double x = double(k) / spans;
+        if ((c.u0 < x && x < c.u1) || (c.v0 < x && x < c.v1)) return true;
+    }
+    return false;
+}
+
+// Cells over several knot spans (block_error.h): on the paraboloid S_uu = S_vv = (0, 0, 2)
+// and S_uv = 0, so a cell du x dv is within (du^2 + dv^2) / 4. With 8 spans of 1/8 and
+// T = 0.02: a block of 2 x 2 spans (0.25 x 0.25) has 0.03125 > T, one span by two
+// (0.125 x 0.25) has 0.0195 <= T, so the cells are 32 such blocks, where cells that stop
+// at every knot line would be at least the 64 patches.
+TEST(KdSubdivision, CellsCrossKnotLinesWhereTheirBoundAllows) {
+    const int spans = 8;
+    const geom::NurbsSurface S = paraboloid(spans);
+    const double T = 0.02;
+    const Eigen::AlignedBox2d box(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1));
+    const CellGrid grid = kd_subdivision(S, box, T, ErrorMode::kGuaranteed);
+    EXPECT_EQ(grid.cells.size(), 32u);
+    double total = 0.0;
+    for (const Cell& c : grid.cells) {
+        total += area(c);
+        EXPECT_TRUE(crosses_knot_line(c, spans)) << c.u0 << " " << c.v0;
+        // The corner triangles against S at the same (u,v), sampled: within T.
+        const Eigen::Vector3d A = S.evaluate(c.u0, c.v0), B = S.evaluate(c.u1, c.v0);
+        const Eigen::Vector3d C = S.evaluate(c.u1, c.v1), D = S.evaluate(c.u0, c.v1);
+        for (int i = 0; i <= 10; ++i)
+            for (int j = 0; i + j <= 10; ++j) {
+                const double s = i / 10.0, t = j / 10.0;  // in the triangle A B C and A C D
+                const Eigen::Vector3d p1 = A + s * (B - A) + t * (C - A);
+                const Eigen::Vector3d p2 = A + s * (C - A) + t * (D - A);
+                EXPECT_LE((p1 - S.evaluate(p1.x(), p1.y())).norm(), T * (1 + 1e-12));
+                EXPECT_LE((p2 - S.evaluate(p2.x(), p2.y())).norm(), T * (1 + 1e-12));
+            }
+    }
+    EXPECT_NEAR(total, 1.0, 1e-12);
+}
+
+// A C^0 knot line (multiplicity = degree) is a crease of the parameterisation even where
+// the surface is flat: no cell crosses it (Taylor's remainder does not hold across it).
+TEST(KdSubdivision, NoCellCrossesAC0KnotLine) {
+    const Eigen::AlignedBox2d box(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1));
+    const geom::NurbsSurface plane = paraboloid(4, true);
+    EXPECT_EQ(kd_subdivision(plane, box, 1e-6, ErrorMode::kGuaranteed).cells.size(), 1u);
+    const geom::NurbsSurface creased = plane.insert_knot_u(0.5);  // 0.5 twice: C^0 for degree 2
+    const CellGrid grid = kd_subdivision(creased, box, 1e-6, ErrorMode::kGuaranteed);
+    ASSERT_EQ(grid.cells.size(), 2u);
+    for (const Cell& c : grid.cells) EXPECT_TRUE(c.u1 <= 0.5 || c.u0 >= 0.5) << c.u0 << " " << c.u1;
+}
+
 }  // namespace
 }  // namespace trimkit::tess

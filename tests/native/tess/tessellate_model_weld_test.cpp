@@ -99,6 +99,53 @@ TEST(TessellateModelWeld, CubeWithSharedEdgesIsClosed) {
     EXPECT_NEAR(mesh::surface_area(r.mesh), 6.0, 1e-12);
 }
 
+// The square [x0, x0 + 1] x [0, 1] in z = 0 as one bilinear face with four edges of
+// its own, appended to `model` as a body of its own.
+void add_square_part(geom::Model& model, double x0) {
+    const Eigen::Vector3d c[4] = {{x0, 0, 0}, {x0 + 1, 0, 0}, {x0 + 1, 1, 0}, {x0, 1, 0}};
+    const std::array<Eigen::Vector2d, 4> uv{Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0),
+                                            Eigen::Vector2d(1, 1), Eigen::Vector2d(0, 1)};
+    geom::Face face;
+    face.surface = geom::NurbsSurface(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, 2, 2, {c[0], c[3], c[1], c[2]});
+    geom::Loop loop;
+    loop.outer = true;
+    for (int k = 0; k < 4; ++k) {
+        geom::Edge edge;
+        edge.start = c[k];
+        edge.end = c[(k + 1) % 4];
+        geom::Coedge coedge;
+        coedge.curve = geom::NurbsCurve2d(1, {0, 0, 1, 1}, {uv[k], uv[(k + 1) % 4]});
+        coedge.edge = static_cast<int>(model.edges.size());
+        model.edges.push_back(edge);
+        loop.coedges.push_back(coedge);
+    }
+    face.loops.push_back(loop);
+    model.bodies.push_back({"square " + std::to_string(model.bodies.size()), {static_cast<int>(model.faces.size())}, false});
+    model.faces.push_back(face);
+}
+
+// Two parts that touch (a nut on a bracket) are not joined to each other: each keeps
+// its own boundary, as when it is meshed alone. Joined across the parts, the squares'
+// common side x = 1 was welded shut (6 open edges instead of 8), and on
+// as1-oc-214-mat.stp the nut's points snapped onto the bracket's left T-junctions
+// inside the bracket.
+TEST(TessellateModelWeld, PartsThatTouchAreJoinedEachOnItsOwn) {
+    TessellationOptions options;
+    options.tolerance = 1e-3;
+    options.threads = 1;
+    geom::Model one;
+    add_square_part(one, 0.0);
+    const TessellationResult alone = tessellate_model(one, options);
+    ASSERT_EQ(alone.open_edges, 4u);  // two triangles, four boundary sides
+    geom::Model two = one;
+    add_square_part(two, 1.0);
+    const TessellationResult both = tessellate_model(two, options);
+    EXPECT_TRUE(both.failed_faces.empty());
+    EXPECT_EQ(both.open_edges, 2 * alone.open_edges);
+    EXPECT_EQ(both.mesh.triangle_count(), 2 * alone.mesh.triangle_count());
+    EXPECT_NEAR(mesh::surface_area(both.mesh), 2.0, 1e-12);
+}
+
 TEST(TessellateModelWeld, ThreadCountDoesNotChangeTheMesh) {
     const geom::Model model = cube();
     TessellationOptions options;

@@ -90,7 +90,7 @@ TEST(VerifyFace, PlateWithThreeHolesPassesWithTheExactArea) {
         // The perimeter from the 3D samples: chords of sagitta <= 0.2 T on the circles
         // miss 0.2 T / (3 r) of their length.
         EXPECT_NEAR(v.perimeter, scale * L, 0.2 * T / (3.0 * kRadius * scale) * circles * scale);
-        EXPECT_LE(v.loop_gap, 0.25 * T * 1.01);  // the trim tolerance
+        EXPECT_LE(v.loop_gap, trim_tolerance(at(T)) * 1.01);
         EXPECT_LE(v.boundary_gap, 0.45 * T);     // the trim tolerance and the samples' chords
         EXPECT_LT(v.edge_gap, 1e-9 * T);
         EXPECT_EQ(v.lobe_samples, 0);
@@ -184,10 +184,14 @@ TEST(VerifyFace, HoleBoundaryMovedInsideTheAreaBoundFailsOnTheLoop) {
     EXPECT_LE(std::abs(v.area_mesh - v.area_exact), v.area_bound);
     EXPECT_EQ(v.defect, FaceDefect::kLoopGap);
     EXPECT_EQ(v.loop_gap_loop, 2);
-    EXPECT_NEAR(v.loop_gap, 5 * T, 0.3 * T);
-    EXPECT_NEAR(v.boundary_gap, 5 * T, 0.3 * T);
+    // 5 T, and up to the trim tolerance more where the hole's chords cut inside it.
+    const double chords = trim_tolerance(at(T));
+    EXPECT_GE(v.loop_gap, 5 * T - 1e-9 * T);
+    EXPECT_LE(v.loop_gap, 5 * T + chords);
+    EXPECT_GE(v.boundary_gap, 5 * T - chords);
+    EXPECT_LE(v.boundary_gap, 5 * T + chords);
     EXPECT_EQ(v.reason.rfind("face 7: trim loop 2 lies 0.05", 0), 0u) << v.reason;
-    EXPECT_NE(v.reason.find("(5 T) from the mesh boundary"), std::string::npos) << v.reason;
+    EXPECT_NE(v.reason.find(" T) from the mesh boundary"), std::string::npos) << v.reason;
 }
 
 TEST(VerifyFace, ExtraHoleNoLoopFollowsFailsOnTheBoundary) {
@@ -202,7 +206,7 @@ TEST(VerifyFace, ExtraHoleNoLoopFollowsFailsOnTheBoundary) {
     const mesh::Mesh m = tessellate_face(face, polygons, at(T), 3);
     const FaceVerification v = verify_face(face, m, polygons, T, 3);
     EXPECT_EQ(v.defect, FaceDefect::kBoundaryGap);
-    EXPECT_LE(v.loop_gap, 0.25 * T * 1.01);
+    EXPECT_LE(v.loop_gap, trim_tolerance(at(T)) * 1.01);
     // Its points lie 1 -+ 3T from the plate's edge y = 0 and the middle hole.
     EXPECT_NEAR(v.boundary_gap, 1.0, 3 * T);
     EXPECT_EQ(v.reason.rfind("face 3: the mesh boundary lies ", 0), 0u) << v.reason;
