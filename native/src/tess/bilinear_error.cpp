@@ -113,6 +113,8 @@ BilinearError bilinear_error(const BezierPatch& patch, ErrorMode mode, double to
         result.split = static_cast<double>(l) / n;
     }
     result.split = std::clamp(result.split, kMinSplit, 1.0 - kMinSplit);
+    // Both bound a polynomial patch; the control net's lags behind on high degrees.
+    if (mode == ErrorMode::kGuaranteed) result.bound = std::min(result.bound, second_derivative_bound(patch).error());
     return result;
 }
 

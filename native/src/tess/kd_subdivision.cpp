@@ -335,18 +335,22 @@ struct PartGrid {
     }
 };
 
-PartGrid part_grid(const std::vector<Part>& parts) {
+// The grid, or empty when the parts do not tile one (each grid cell one part).
+std::optional<PartGrid> part_grid(const std::vector<Part>& parts) {
     PartGrid g;
     for (const Part& p : parts) g.u.insert(g.u.end(), {p.u0, p.u1}), g.v.insert(g.v.end(), {p.v0, p.v1});
     for (auto* x : {&g.u, &g.v}) {
         std::sort(x->begin(), x->end());
         x->erase(std::unique(x->begin(), x->end()), x->end());
     }
-    g.index.assign((g.u.size() - 1) * (g.v.size() - 1), -1);
+    if (g.u.size() < 2 || g.v.size() < 2 || (g.u.size() - 1) * (g.v.size() - 1) != parts.size()) return std::nullopt;
+    g.index.assign(parts.size(), -1);
     for (size_t k = 0; k < parts.size(); ++k) {
         const auto iu = std::lower_bound(g.u.begin(), g.u.end(), parts[k].u0) - g.u.begin();
         const auto iv = std::lower_bound(g.v.begin(), g.v.end(), parts[k].v0) - g.v.begin();
-        g.index[iu * (g.v.size() - 1) + iv] = static_cast<int>(k);
+        int& slot = g.index[iu * (g.v.size() - 1) + iv];
+        if (slot >= 0 || g.u[iu + 1] != parts[k].u1 || g.v[iv + 1] != parts[k].v1) return std::nullopt;
+        slot = static_cast<int>(k);
     }
     return g;
 }
@@ -363,10 +367,9 @@ std::pair<long, long> sides_inside(const std::vector<double>& sides, double lo, 
 // way); a block within one span in both directions is one Bezier patch's piece, which
 // `subdivide` takes on. Not for surfaces of revolution: their exact bound is per patch.
 template <class Stretch>
-void subdivide_blocks(const geom::NurbsSurface& surface, const std::vector<Part>& parts, TrimSegments& trims,
-                      const Stretch& stretch, ErrorMode mode, double min_du, double min_dv,
+void subdivide_blocks(const geom::NurbsSurface& surface, const std::vector<Part>& parts, const PartGrid& grid,
+                      TrimSegments& trims, const Stretch& stretch, ErrorMode mode, double min_du, double min_dv,
                       std::vector<Cell>& leaves) {
-    const PartGrid grid = part_grid(parts);
     struct Block {
         Cell cell;
         std::vector<int> segments;
@@ -463,8 +466,10 @@ CellGrid subdivide_box(const geom::NurbsSurface& surface, const Eigen::AlignedBo
 
     CellGrid grid;
     grid.box = box;
-    if (!trims.shape && parts.size() > 1) {
-        subdivide_blocks(surface, parts, trims, stretch, mode, min_du, min_dv, grid.cells);
+    const std::optional<PartGrid> blocks =
+        trims.shape || parts.size() < 2 ? std::nullopt : part_grid(parts);
+    if (blocks) {
+        subdivide_blocks(surface, parts, *blocks, trims, stretch, mode, min_du, min_dv, grid.cells);
     } else {
         for (const Part& p : parts) {
             Node node{restrict_patch(bezier_patch(*p.bezier), p.u0, p.u1, p.v0, p.v1), {}};
