@@ -48,6 +48,29 @@ BilinearError rational_error(const BezierPatch& patch, double tolerance) {
     return result;
 }
 
+// second_derivative_bound of a polynomial patch, from its hodographs' control points:
+// |S_ss| <= m (m - 1) max |P_{i+2,j} - 2 P_{i+1,j} + P_ij|, |S_st| <= m n max |twist of
+// P|, |S_tt| likewise (the convex hull of a Bezier derivative's control points).
+SecondDerivativeBound polynomial_derivative_bound(const BezierPatch& patch) {
+    const int m = patch.p, n = patch.q;
+    SecondDerivativeBound M;
+    for (int i = 0; i <= m; ++i)
+        for (int j = 0; j <= n; ++j) {
+            const Eigen::Vector3d P = patch.euclidean(i, j);
+            if (i + 2 <= m)
+                M.M_uu = std::max(M.M_uu, (patch.euclidean(i + 2, j) - 2.0 * patch.euclidean(i + 1, j) + P).norm());
+            if (j + 2 <= n)
+                M.M_vv = std::max(M.M_vv, (patch.euclidean(i, j + 2) - 2.0 * patch.euclidean(i, j + 1) + P).norm());
+            if (i + 1 <= m && j + 1 <= n)
+                M.M_uv = std::max(M.M_uv, (patch.euclidean(i + 1, j + 1) - patch.euclidean(i + 1, j) -
+                                           patch.euclidean(i, j + 1) + P).norm());
+        }
+    M.M_uu *= m * (m - 1);
+    M.M_vv *= n * (n - 1);
+    M.M_uv *= m * n;
+    return M;
+}
+
 }  // namespace
 
 BilinearError bilinear_error(const BezierPatch& patch, ErrorMode mode, double tolerance) {
@@ -114,7 +137,8 @@ BilinearError bilinear_error(const BezierPatch& patch, ErrorMode mode, double to
     }
     result.split = std::clamp(result.split, kMinSplit, 1.0 - kMinSplit);
     // Both bound a polynomial patch; the control net's lags behind on high degrees.
-    if (mode == ErrorMode::kGuaranteed) result.bound = std::min(result.bound, second_derivative_bound(patch).error());
+    if (mode == ErrorMode::kGuaranteed && result.bound > tolerance)
+        result.bound = std::min(result.bound, polynomial_derivative_bound(patch).error());
     return result;
 }
 

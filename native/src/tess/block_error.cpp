@@ -1,22 +1,17 @@
 #include "tess/block_error.h"
 
-#include <limits>
-
-#include "tess/derivative_bounds.h"
-
 namespace trimkit::tess {
 
-BlockError block_error(const geom::NurbsSurface& S, const Eigen::AlignedBox2d& r) {
-    constexpr double kInfinity = std::numeric_limits<double>::infinity();
-    if (!is_c1_inside(S, r)) return {kInfinity, kInfinity, kInfinity};
-    const SurfaceDerivativeBounds M = surface_derivative_bounds(S, r);
-    const double du = r.sizes().x(), dv = r.sizes().y();
+BlockError block_error(const SecondDerivativeBound& M, double du, double dv) {
     BlockError e;
-    e.u_term = M.Muu * du * du / 8.0;
-    e.v_term = M.Mvv * dv * dv / 8.0;
-    e.bound = e.u_term + M.Muv * du * dv / 4.0 + e.v_term;
-    if (!std::isfinite(e.bound)) return {kInfinity, kInfinity, kInfinity};
+    e.u_term = M.M_uu * du * du / 8.0;
+    e.v_term = M.M_vv * dv * dv / 8.0;
+    e.bound = e.u_term + M.M_uv * du * dv / 4.0 + e.v_term;
     return e;
+}
+
+SecondDerivativeBound in_surface_parameters(const SecondDerivativeBound& local, double du, double dv) {
+    return {local.M_uu / (du * du), local.M_uv / (du * dv), local.M_vv / (dv * dv)};
 }
 
 }  // namespace trimkit::tess

@@ -12,6 +12,7 @@
 #include "tess/bilinear_error.h"
 #include "tess/block_error.h"
 #include "tess/derivative_bounds.h"
+#include "tess/second_derivative_bound.h"
 
 namespace trimkit::tess {
 namespace {
@@ -374,6 +375,28 @@ void subdivide_blocks(const geom::NurbsSurface& surface, const std::vector<Part>
         Cell cell;
         std::vector<int> segments;
     };
+    // Per part, its second-derivative bound in the surface's parameters; a block's is
+    // the largest over the parts it overlaps.
+    std::vector<SecondDerivativeBound> part_bounds(parts.size());
+    for (size_t k = 0; k < parts.size(); ++k) {
+        const Part& p = parts[k];
+        const BezierPatch patch = restrict_patch(bezier_patch(*p.bezier), p.u0, p.u1, p.v0, p.v1);
+        part_bounds[k] = in_surface_parameters(second_derivative_bound(patch), p.u1 - p.u0, p.v1 - p.v0);
+    }
+    const auto block_bound = [&](const Cell& c) {
+        const long nv = static_cast<long>(grid.v.size()) - 1;
+        const long iu0 = std::upper_bound(grid.u.begin(), grid.u.end(), c.u0) - grid.u.begin() - 1;
+        const long iu1 = std::lower_bound(grid.u.begin(), grid.u.end(), c.u1) - grid.u.begin();
+        const long iv0 = std::upper_bound(grid.v.begin(), grid.v.end(), c.v0) - grid.v.begin() - 1;
+        const long iv1 = std::lower_bound(grid.v.begin(), grid.v.end(), c.v1) - grid.v.begin();
+        SecondDerivativeBound M;
+        for (long iu = iu0; iu < iu1; ++iu)
+            for (long iv = iv0; iv < iv1; ++iv) {
+                const SecondDerivativeBound& m = part_bounds[grid.index[iu * nv + iv]];
+                M = {std::max(M.M_uu, m.M_uu), std::max(M.M_uv, m.M_uv), std::max(M.M_vv, m.M_vv)};
+            }
+        return M;
+    };
     std::vector<Block> stack(1);
     stack[0].cell = Cell{grid.u.front(), grid.u.back(), grid.v.front(), grid.v.back()};
     if (trims.active) segments_meeting(trims, stretch(stack[0].cell), all_segments(trims), stack[0].segments);
@@ -395,13 +418,13 @@ void subdivide_blocks(const geom::NurbsSurface& surface, const std::vector<Part>
             leaves.push_back(c);
             continue;
         }
-        const BlockError error = block_error(surface, Eigen::AlignedBox2d(Eigen::Vector2d(c.u0, c.v0),
-                                                                          Eigen::Vector2d(c.u1, c.v1)));
-        if (error.bound <= *tolerance) {
+        const bool c1 = is_c1_inside(surface, Eigen::AlignedBox2d(Eigen::Vector2d(c.u0, c.v0), Eigen::Vector2d(c.u1, c.v1)));
+        const BlockError error = c1 ? block_error(block_bound(c), c.u1 - c.u0, c.v1 - c.v0) : BlockError{};
+        if (c1 && error.bound <= *tolerance) {
             add_leaf(c, *tolerance, leaves);
             continue;
         }
-        bool in_u = std::isfinite(error.bound) ? error.u_term >= error.v_term : u_last - u_first >= v_last - v_first;
+        bool in_u = c1 && std::isfinite(error.bound) ? error.u_term >= error.v_term : u_last - u_first >= v_last - v_first;
         if (in_u ? (c.u1 - c.u0 <= min_du) : (c.v1 - c.v0 <= min_dv)) in_u = !in_u;
         const auto [first, last] = in_u ? std::make_pair(u_first, u_last) : std::make_pair(v_first, v_last);
         const std::vector<double>& sides = in_u ? grid.u : grid.v;
