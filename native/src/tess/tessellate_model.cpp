@@ -57,6 +57,9 @@ constexpr double kSliverWidthShare = 0.01;
 // tolerance from its 3D curve is approximated on its second face instead when that
 // one follows the curve at least twice as closely (pcurve_edge_gap.h).
 constexpr double kEdgeGapShare = 0.1;
+// A shared edge's chords keep back the gap between its 3D curve and the kept face's trim,
+// up to this share of their tolerance.
+constexpr double kEdgeGapReserve = 0.5;
 // A sewn edge (sew_free_coedges.h, within 2 kWeldShare T at its test points) whose
 // faces lie farther apart than this share of T along its polyline is unsewn.
 constexpr double kSewnGapLimit = 0.3;
@@ -418,6 +421,16 @@ void meet_midway(const geom::Model& model, const std::vector<int>& shared, const
                                " apart along it (more than the tolerance); the mesh runs midway between them");
 }
 
+// The report of a shared edge whose points lie `gap` from face f's surface, more than
+// the face tolerance T leaves beside the edge's chords (surface_tolerance).
+std::string edge_off_face_warning(int f, int e, double gap, double tolerance) {
+    const std::string t = geom::format_value(tolerance);
+    return "face " + std::to_string(f) + ": edge " + std::to_string(e) + " lies " + geom::format_value(gap) +
+           " from the surface (more than the tolerance " + t + " leaves beside the edge's chords, " +
+           geom::format_value(trim_tolerance({tolerance})) + ": the file's edge is that far off this face, and the "
+           "mesh follows the edge, so the face's mesh may lie up to their sum from it)";
+}
+
 // Meshes face f one way (`attempt`), welds it and verifies the mesh. Any failure
 // (an exception, no triangles, a rejected mesh) is out.error, naming the face.
 // trim_scale, cell_scale: the shares of their tolerance the face's own trims and its
@@ -449,11 +462,10 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
                     polylines.push_back(*edges.polyline[e]);
                 } else if (has_edge) {
                     SharedEdgePolyline mapped = share_edge_points(face.surface, coedge, edges.points[e]);
-                    if (mapped.max_gap > options.tolerance)
-                        out.warnings.push_back("face " + std::to_string(f) + ": edge " + std::to_string(e) +
-                                               " lies " + geom::format_value(mapped.max_gap) +
-                                               " from the surface (more than the tolerance: the file's edge is that "
-                                               "far off this face, and the mesh follows the edge)");
+                    // The mesh follows the edge, its chords up to the trim tolerance off it:
+                    // beyond what T leaves beside them the face's mesh may leave T.
+                    if (mapped.max_gap > surface_tolerance(options))
+                        out.warnings.push_back(edge_off_face_warning(f, e, mapped.max_gap, options.tolerance));
                     polylines.push_back(std::move(mapped.polyline));
                 } else {
                     // A coedge of an edge that is not shared here is welded to its other
@@ -573,6 +585,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
             }
     // The face whose p-curve follows the edge's 3D curve gives the edge its points.
     std::vector<double> curve_gap(model.edges.size(), 0.0);  // reported below when over T
+    std::vector<double> kept_gaps(model.edges.size(), 0.0);  // the kept face's coarse gap
     mesh::parallel_for(static_cast<int>(shared.size()), threads, [&](int k) {
         const int e = shared[k];
         if (second[e].face < 0 || !model.edges[e].curve) return;
@@ -589,6 +602,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
                 kept_gap = second_gap;
             }
         }
+        kept_gaps[e] = kept_gap;
         // Neither face follows the file's edge curve (its trims agree, its curve does
         // not): the mesh follows the faces, and says so.
         if (kept_gap > options.tolerance) {
@@ -619,8 +633,13 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
             // Its own limit (each face has its own too): an edge over it is left to its faces,
             // which then stop at theirs and report it.
             mesh::Deadline deadline(options.face_timeout, options.cancel);
-            TrimPolyline polyline = approximate_trim_curve(face.surface, coedge.curve, scale * trim_tolerance(options),
-                                                           options.trim_method, &deadline);
+            // The edge's own curve lies up to kept_gaps[e] from the face's trim (a measure
+            // that takes the curve for the faces' boundary, as OCCT's does, sees both):
+            // the chords keep that much of their tolerance back, up to half of it.
+            const double edge_tolerance = scale * trim_tolerance(options);
+            const double chord_tolerance = edge_tolerance - std::min(kept_gaps[e], kEdgeGapReserve * edge_tolerance);
+            TrimPolyline polyline =
+                approximate_trim_curve(face.surface, coedge.curve, chord_tolerance, options.trim_method, &deadline);
             polyline.edge = e;
             edge_points[e] = edge_points_from(polyline, coedge.edge_reversed);
             edge_polyline[e] = std::move(polyline);

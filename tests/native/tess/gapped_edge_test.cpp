@@ -35,7 +35,7 @@ geom::Coedge line(Eigen::Vector2d a, Eigen::Vector2d b, int edge = -1, bool reve
 // the line x = 1 from y = 0 to 1, which face 0 traverses along its direction and
 // face 1 against. The other sides are edges of one face each (1-3 on face 0, 4-6 on
 // face 1), as in a STEP shell's outer boundary: their ends meet edge 0's.
-geom::Model gapped_pair() {
+geom::Model gapped_pair(double gap = kGap) {
     geom::Model model;
     geom::Edge edge;
     edge.curve = geom::NurbsCurve3d(1, {0, 0, 1, 1}, {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 1, 0)});
@@ -43,7 +43,7 @@ geom::Model gapped_pair() {
     edge.end = Eigen::Vector3d(1, 1, 0);
     model.edges.push_back(edge);
     model.edges.resize(7);  // 1-6: one face's each, no 3D curve
-    const double u = 1.0 - kGap;
+    const double u = 1.0 - gap;
     geom::Face left;
     left.surface = unit_square_at(0.0);
     geom::Loop a;
@@ -132,6 +132,29 @@ TEST(GappedEdge, AnEdgeCurveOffBothFacesIsReported) {
         EXPECT_EQ(reported, lift > kTolerance ? 1 : 0);
         // The mesh lies on the faces (z = 0) whatever the curve: the two unit squares.
         EXPECT_NEAR(mesh::surface_area(r.mesh), 2.0, 1e-12);
+    }
+}
+
+// Face 0 follows edge 0's points (face 1's, on the edge) from `gap` short of them: its
+// mesh lies up to gap + the chords' trim tolerance from face 0. Beyond what the face
+// tolerance F leaves beside the chords (surface_tolerance: F / 2) that can exceed F, so
+// the result says so (linkrods.step at 1e-4 of its size: 0.88 F apart, 1.16 T by
+// `trimkit check`, without a word); within it, nothing is reported.
+TEST(GappedEdge, AnEdgeFartherOffAFaceThanTheChordsLeaveIsReported) {
+    TessellationOptions options;
+    options.tolerance = kTolerance;
+    options.threads = 1;
+    const double F = face_tolerance(options);
+    for (double gap : {0.7 * F, 0.3 * F}) {
+        SCOPED_TRACE(gap);
+        const TessellationResult r = tessellate_model(gapped_pair(gap), options);
+        ASSERT_TRUE(r.failed_faces.empty());
+        int reported = 0;
+        for (const std::string& w : r.warnings)
+            if (w.rfind("face 0: edge 0 lies ", 0) == 0 &&
+                w.find(" from the surface (more than the tolerance ") != std::string::npos)
+                ++reported;
+        EXPECT_EQ(reported, gap > surface_tolerance({F}) ? 1 : 0);
     }
 }
 
