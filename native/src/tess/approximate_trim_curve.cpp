@@ -219,7 +219,7 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
             surface_derivative_bounds(S, Eigen::AlignedBox2d(box.min(), box.max()));
         const double speed = affine ? 0.0 : std::hypot(Ms.Mu, Ms.Mv);
         if (simplification == TrimSimplification::kHulls)
-            simplify_trim_polyline(&out, hulls, S, tolerance, speed);
+            simplify_trim_polyline(&out, hulls, S, tolerance, speed, deadline);
         else
             simplify_trim_polyline(&out, (1.0 - kTrimGamma) * tolerance, speed);
         break;

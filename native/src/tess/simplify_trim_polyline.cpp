@@ -22,9 +22,10 @@ void keep_marked(std::vector<PolylinePoint>& P, const std::vector<char>& keep) {
 // (e3 + speed e2) / tolerance over the hulls of segments a .. b-1 against the chord
 // from point a to point b; infinite where a segment has no hull.
 double hull_ratio(const std::vector<PolylinePoint>& P, const std::vector<SegmentHull>& hulls, int a, int b,
-                  double tolerance, double speed) {
+                  double tolerance, double speed, mesh::Deadline* deadline) {
     double e3 = 0.0, e2 = 0.0;
     for (int k = a; k < b; ++k) {
+        mesh::check_deadline(deadline, "trim curve simplification");
         if (hulls[k].xyz.empty()) return std::numeric_limits<double>::infinity();
         for (const Eigen::Vector3d& x : hulls[k].xyz) e3 = std::max(e3, geom::segment_distance(x, P[a].xyz, P[b].xyz));
         if (speed > 0.0)
@@ -36,7 +37,8 @@ double hull_ratio(const std::vector<PolylinePoint>& P, const std::vector<Segment
 }  // namespace
 
 void simplify_trim_polyline(TrimPolyline* polyline, const std::vector<SegmentHull>& hulls,
-                            const geom::NurbsSurface& S, double tolerance, double surface_speed) {
+                            const geom::NurbsSurface& S, double tolerance, double surface_speed,
+                            mesh::Deadline* deadline) {
     std::vector<PolylinePoint>& P = polyline->points;
     const int n = static_cast<int>(P.size());
     if (n <= 2 || !(tolerance > 0.0) || hulls.size() + 1 != P.size()) return;
@@ -58,7 +60,8 @@ void simplify_trim_polyline(TrimPolyline* polyline, const std::vector<SegmentHul
         if (b - a < 2) continue;
         Eigen::AlignedBox2d chord_box(P[a].uv);
         chord_box.extend(P[b].uv);
-        if (hull_ratio(P, hulls, a, b, tolerance, surface_speed) <= 1.0 && is_c1_inside(S, chord_box)) continue;
+        if (hull_ratio(P, hulls, a, b, tolerance, surface_speed, deadline) <= 1.0 && is_c1_inside(S, chord_box))
+            continue;
         // Split at the point farthest from the chord, as Douglas-Peucker does.
         int worst = (a + b) / 2;
         double worst_distance = 0.0;

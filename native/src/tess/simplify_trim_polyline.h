@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "geom/nurbs_surface.h"
+#include "mesh/deadline.h"
 #include "tess/trim_polyline.h"
 
 namespace trimkit::tess {
@@ -42,7 +43,11 @@ struct SegmentHull {
 // spans). Not across a C^0 knot line of S (is_c1_inside over the chord's (u,v) box):
 // kd_subdivision's crossing offsets need S to be C^1 along a segment.
 // hulls[k]: segment k, from point k to k + 1; segments without a hull stay as they are.
+// `deadline`: checked per range and per hull tested (a curve of many points whose
+// ranges split one point at a time takes the square of its points); throws
+// mesh::DeadlineExceeded once it has passed.
 void simplify_trim_polyline(TrimPolyline* polyline, const std::vector<SegmentHull>& hulls,
-                            const geom::NurbsSurface& S, double tolerance, double surface_speed);
+                            const geom::NurbsSurface& S, double tolerance, double surface_speed,
+                            mesh::Deadline* deadline = nullptr);
 
 }  // namespace trimkit::tess

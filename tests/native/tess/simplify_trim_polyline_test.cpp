@@ -2,7 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <thread>
+
+#include "geom/nurbs_surface.h"
+#include "mesh/deadline.h"
 
 namespace trimkit::tess {
 namespace {
@@ -56,6 +61,29 @@ TEST(SimplifyTrimPolyline, UvDeviationCountsThroughSurfaceSpeed) {
     EXPECT_EQ(slow.points.size(), 2u);
     simplify_trim_polyline(&fast, 1e-3, 10.0);
     EXPECT_EQ(fast.points.size(), 3u);
+}
+
+// A zig-zag of 4001 points 0.01 apart along x and 0.5 across, on the plane z = 0
+// (each segment's hull its own two ends): against the hulls no point can go, and the
+// ranges split a point at a time from the peaks inwards. With a deadline that has
+// passed, the simplification stops with DeadlineExceeded instead of finishing.
+TEST(SimplifyTrimPolyline, HullRangesStopAtTheDeadline) {
+    const geom::NurbsSurface plane(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, 2, 2,
+                                   {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}});
+    TrimPolyline zigzag;
+    std::vector<SegmentHull> hulls;
+    constexpr int n = 4000;
+    for (int k = 0; k <= n; ++k) {
+        PolylinePoint p = at(0.01 * k, 0.5 + (k % 2 ? 0.25 : -0.25), 0.0);
+        zigzag.points.push_back(p);
+        if (k > 0) hulls.push_back({{zigzag.points[k - 1].xyz, p.xyz}, {zigzag.points[k - 1].uv, p.uv}});
+    }
+    TrimPolyline all = zigzag;
+    simplify_trim_polyline(&all, hulls, plane, 1e-3, 1.0);
+    EXPECT_EQ(all.points.size(), std::size_t(n + 1));
+    mesh::Deadline passed(1e-6);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    EXPECT_THROW(simplify_trim_polyline(&zigzag, hulls, plane, 1e-3, 1.0, &passed), mesh::DeadlineExceeded);
 }
 
 }  // namespace
