@@ -377,11 +377,12 @@ void subdivide_blocks(const geom::NurbsSurface& surface, const std::vector<Part>
     };
     // Per part, its second-derivative bound in the surface's parameters; a block's is
     // the largest over the parts it overlaps.
+    std::vector<BezierPatch> part_patches(parts.size());
     std::vector<SecondDerivativeBound> part_bounds(parts.size());
     for (size_t k = 0; k < parts.size(); ++k) {
         const Part& p = parts[k];
-        const BezierPatch patch = restrict_patch(bezier_patch(*p.bezier), p.u0, p.u1, p.v0, p.v1);
-        part_bounds[k] = in_surface_parameters(second_derivative_bound(patch), p.u1 - p.u0, p.v1 - p.v0);
+        part_patches[k] = restrict_patch(bezier_patch(*p.bezier), p.u0, p.u1, p.v0, p.v1);
+        part_bounds[k] = in_surface_parameters(second_derivative_bound(part_patches[k]), p.u1 - p.u0, p.v1 - p.v0);
     }
     const auto block_bound = [&](const Cell& c) {
         const long nv = static_cast<long>(grid.v.size()) - 1;
@@ -408,8 +409,7 @@ void subdivide_blocks(const geom::NurbsSurface& surface, const std::vector<Part>
         const auto [u_first, u_last] = sides_inside(grid.u, c.u0, c.u1);
         const auto [v_first, v_last] = sides_inside(grid.v, c.v0, c.v1);
         if (u_first == u_last && v_first == v_last) {
-            const Part& p = parts[grid.holding(c)];
-            Node node{restrict_patch(bezier_patch(*p.bezier), c.u0, c.u1, c.v0, c.v1), std::move(block.segments)};
+            Node node{restrict_patch(part_patches[grid.holding(c)], c.u0, c.u1, c.v0, c.v1), std::move(block.segments)};
             subdivide(std::move(node), trims, stretch, mode, min_du, min_dv, leaves);
             continue;
         }

@@ -782,19 +782,26 @@ void join_pass(TessellationResult& result, const TessellationOptions& options, d
     const double least_scale =
         trim_scale.empty() ? 1.0 : *std::min_element(trim_scale.begin(), trim_scale.end());
     const int threads = mesh::resolve_threads(options.threads);
+    const auto join = [&](mesh::Mesh& part, std::vector<std::string>& warnings) {
+        join_faces(part, weld_distance, least_scale * trim_tolerance(options), threads, warnings);
+        flag_edges(part, options.angle, threads);
+        return count_position_open_edges(part, threads);
+    };
+    if (groups.size() <= 1) {  // one part: joined in place
+        result.open_edges = result.mesh.vertex_count() > 0 ? join(result.mesh, result.warnings) : 0;
+        result.seconds.weld = seconds_since(start);
+        return;
+    }
     std::vector<int> group_of_face(scales.trim.size(), 0);
     for (size_t g = 0; g < groups.size(); ++g)
         for (int f : groups[g]) group_of_face[f] = static_cast<int>(g);
-    std::vector<mesh::Mesh> parts =
-        split_by_face_group(result.mesh, group_of_face, std::max<int>(1, static_cast<int>(groups.size())));
+    std::vector<mesh::Mesh> parts = split_by_face_group(result.mesh, group_of_face, static_cast<int>(groups.size()));
     result.mesh = mesh::Mesh{};
     result.open_edges = 0;
     std::vector<std::string> warnings;
     for (mesh::Mesh& part : parts) {
         if (part.vertex_count() == 0) continue;
-        join_faces(part, weld_distance, least_scale * trim_tolerance(options), threads, warnings);
-        flag_edges(part, options.angle, threads);
-        result.open_edges += count_position_open_edges(part, threads);
+        result.open_edges += join(part, warnings);
         mesh::append(result.mesh, part);
     }
     std::sort(warnings.begin(), warnings.end());
@@ -812,7 +819,6 @@ void add_seconds(TessellationTimings& total, const TessellationTimings& pass) {
     total.verify += pass.verify;
 }
 
-// The model meshed as it is (tessellate_model after sewing).
 // The area rounds cut scales by the loss they predict, and a polyline's points change
 // in steps, so a round can land far under the budget with many more triangles than it
 // needs (torus_hole_on_seams_faces.igs: 0.154 % -> 0.034 %, +50 %). Then the scales are
@@ -847,6 +853,7 @@ void back_off_to_budget(const geom::Model& model, const TessellationOptions& fac
     }
 }
 
+// The model meshed as it is (tessellate_model after sewing).
 TessellationResult tessellate_sewn(const geom::Model& model, const TessellationOptions& options) {
     const double weld_distance = kWeldShare * options.tolerance;
     TessellationOptions face_options = options;
