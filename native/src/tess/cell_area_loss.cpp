@@ -10,22 +10,9 @@
 namespace trimkit::tess {
 namespace {
 
-// Area of S over the (u,v) triangle abc less the flat triangle's (degree-2 rule:
-// barycentric (2/3, 1/6, 1/6) and its permutations, weight 1/3 each).
 double triangle_loss(SurfaceEvaluator& evaluator, const mesh::Mesh& m, const std::array<std::int32_t, 3>& t) {
-    constexpr double kNear = 2.0 / 3.0, kFar = 1.0 / 6.0;
-    const Eigen::Vector2d ab = m.uvs[t[1]] - m.uvs[t[0]], ac = m.uvs[t[2]] - m.uvs[t[0]];
-    const double uv_area = 0.5 * std::abs(ab.x() * ac.y() - ab.y() * ac.x());
-    double element = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        const Eigen::Vector2d uv = kNear * m.uvs[t[k]] + kFar * (m.uvs[t[(k + 1) % 3]] + m.uvs[t[(k + 2) % 3]]);
-        Eigen::Vector3d P, Su, Sv;
-        evaluator.evaluate(uv.x(), uv.y(), P, Su, Sv);
-        element += Su.cross(Sv).norm() / 3.0;
-    }
-    const Eigen::Vector3d& p = m.positions[t[0]];
-    const double flat = 0.5 * (m.positions[t[1]] - p).cross(m.positions[t[2]] - p).norm();
-    return uv_area * element - flat;
+    return triangle_area_loss(evaluator, {m.uvs[t[0]], m.uvs[t[1]], m.uvs[t[2]]},
+                              {m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]});
 }
 
 // The lens between the chord a-b and S over the (u,v) chord, positive when S bulges
@@ -47,6 +34,23 @@ double boundary_lens(SurfaceEvaluator& evaluator, const mesh::Mesh& m, int a, in
 }
 
 }  // namespace
+
+// The degree-2 rule: barycentric (2/3, 1/6, 1/6) and its permutations, weight 1/3 each.
+double triangle_area_loss(SurfaceEvaluator& evaluator, const std::array<Eigen::Vector2d, 3>& uv,
+                          const std::array<Eigen::Vector3d, 3>& xyz) {
+    constexpr double kNear = 2.0 / 3.0, kFar = 1.0 / 6.0;
+    const Eigen::Vector2d ab = uv[1] - uv[0], ac = uv[2] - uv[0];
+    const double uv_area = 0.5 * std::abs(ab.x() * ac.y() - ab.y() * ac.x());
+    double element = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector2d p = kNear * uv[k] + kFar * (uv[(k + 1) % 3] + uv[(k + 2) % 3]);
+        Eigen::Vector3d P, Su, Sv;
+        evaluator.evaluate(p.x(), p.y(), P, Su, Sv);
+        element += Su.cross(Sv).norm() / 3.0;
+    }
+    const double flat = 0.5 * (xyz[1] - xyz[0]).cross(xyz[2] - xyz[0]).norm();
+    return uv_area * element - flat;
+}
 
 double cell_area_loss(const geom::NurbsSurface& S, const mesh::Mesh& face_mesh) {
     const mesh::Mesh& m = face_mesh;

@@ -10,6 +10,7 @@
 
 #include "geom/nurbs_surface.h"
 #include "mesh/mesh.h"
+#include "tess/surface_evaluator.h"
 
 namespace trimkit::tess {
 
@@ -21,5 +22,10 @@ namespace trimkit::tess {
 // part of the strip between the chord and the trim curve, and only finer trims
 // close it. Positive when the mesh is smaller than the surface it spans.
 double cell_area_loss(const geom::NurbsSurface& S, const mesh::Mesh& face_mesh);
+
+// One triangle's share of that: the area of S over the (u,v) triangle `uv` (degree-2
+// rule) less the area of the 3D triangle `xyz`.
+double triangle_area_loss(SurfaceEvaluator& evaluator, const std::array<Eigen::Vector2d, 3>& uv,
+                          const std::array<Eigen::Vector3d, 3>& xyz);
 
 }  // namespace trimkit::tess

@@ -11,6 +11,7 @@
 #include "tess/collapsed_side.h"
 #include "tess/flattened_cell.h"
 #include "tess/kd_subdivision.h"
+#include "tess/remove_crossings.h"
 #include "tess/snap_trims_to_cell_lines.h"
 #include "tess/surface_evaluator.h"
 #include "mesh/triangulate_polygon.h"
@@ -126,6 +127,15 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
         triangles.insert(triangles.end(), cell_triangles.begin(), cell_triangles.end());
     }
 
+    // Crossings removed where the bound allows (remove_crossings.h); the trimmed cells'
+    // vertices, all a crossing's triangles have, are placed.
+    CrossingMesh reduced{std::move(uv), std::move(xyz), std::vector<char>(trimmed.vertices.size()),
+                         std::move(triangles), trimmed.trim_edges};
+    for (size_t i = 0; i < trimmed.vertices.size(); ++i) reduced.crossing[i] = trimmed.vertices[i].crossing;
+    remove_crossings(face.surface, reduced, interior_tolerance(options), options.tolerance, deadline);
+    uv = std::move(reduced.uv);
+    triangles = std::move(reduced.triangles);
+
     // Used vertices, numbered in (v, u) order so evaluation runs along rows.
     std::vector<int> used;
     {
@@ -168,7 +178,7 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     }
     mesh.face_ids.assign(mesh.triangles.size(), face_id);
     std::set<std::pair<int, int>> boundary;
-    for (const auto& e : trimmed.trim_edges) {
+    for (const auto& e : reduced.trim_edges) {
         const int a = index[e[0]], b = index[e[1]];
         if (a < 0 || b < 0 || a == b) continue;
         boundary.emplace(std::min(a, b), std::max(a, b));

@@ -436,6 +436,15 @@ std::string edge_off_face_warning(int f, int e, double gap, double tolerance) {
            "mesh follows the edge, so the face's mesh may lie up to their sum from it)";
 }
 
+// Marks trim points whose chords keep their cell crossings (remove_crossings.h): the
+// polylines the join welds by position to another face's, where a crossing is a point
+// to meet (a coedge the face approximates alone while its edge has another face; a
+// repaired loop, whose cuts and dropped lobes leave its boundary off its neighbours':
+// removed there, bug22869_Spring.igs at 1e-3 had 23 open edges instead of 9).
+void keep_crossings(std::vector<PolylinePoint>& points) {
+    for (PolylinePoint& p : points) p.keep_crossings = true;
+}
+
 // Meshes face f one way (`attempt`), welds it and verifies the mesh. Any failure
 // (an exception, no triangles, a rejected mesh) is out.error, naming the face.
 // trim_scale, cell_scale: the shares of their tolerance the face's own trims and its
@@ -481,6 +490,7 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
                                                                &deadline, simplification));
                     polylines.back().edge = e;
                     drop_duplicate_points(polylines.back(), kDuplicatePointShare * options.tolerance);
+                    if (e >= 0) keep_crossings(polylines.back().points);
                 }
             }
             LoopRepairReport report;
@@ -489,8 +499,10 @@ FaceOutput mesh_face(const geom::Model& model, int f, const TessellationOptions&
             for (size_t c = 0; c < polylines.size(); ++c)
                 out.trim_loss += trim_area_loss(face.surface, loop.coedges[c].curve, polylines[c], region_left);
             for (TrimPolygon& p : repair_trim_loop(joined, snap_uv, &report, face.reversed, &face.surface,
-                                                   attempt.sliver_share * options.tolerance, &deadline))
+                                                   attempt.sliver_share * options.tolerance, &deadline)) {
+                if (report.changed()) keep_crossings(p.points);
                 polygons.push_back(std::move(p));
+            }
             if (report.changed())
                 out.warnings.push_back("face " + std::to_string(f) + ": trim loop " + std::to_string(l) +
                                        " repaired (" + std::to_string(report.crossings) + " crossings, " +

@@ -33,16 +33,20 @@ UvKey key_of(const Eigen::Vector2d& uv) {
 // Vertices of the trimmed cells, one per (u,v).
 class VertexTable {
 public:
-    int add(const Eigen::Vector2d& uv, const Eigen::Vector3d* xyz) {
+    // `crossing`: xyz is a crossing's (a trim point at the same (u,v) makes it a trim point).
+    int add(const Eigen::Vector2d& uv, const Eigen::Vector3d* xyz, bool crossing = false) {
         auto [it, inserted] = index_.try_emplace(key_of(uv), static_cast<int>(vertices_.size()));
         if (inserted) {
             TrimmedVertex vertex;
             vertex.uv = uv;
-            if (xyz) vertex.xyz = *xyz, vertex.on_trim = true;
+            if (xyz) vertex.xyz = *xyz, vertex.on_trim = true, vertex.crossing = crossing;
             vertices_.push_back(vertex);
         } else if (xyz && !vertices_[it->second].on_trim) {
             vertices_[it->second].xyz = *xyz;  // trim points keep their given xyz
             vertices_[it->second].on_trim = true;
+            vertices_[it->second].crossing = crossing;
+        } else if (xyz && !crossing) {
+            vertices_[it->second].crossing = false;
         }
         return it->second;
     }
@@ -143,6 +147,7 @@ struct Crossing {
     Eigen::Vector2d uv;
     Eigen::Vector3d xyz;
     double position = 0.0;  // on the cell's perimeter
+    bool removable = false;  // strictly inside a segment remove_crossings may take it from
 };
 
 Crossing crossing(const Cell& c, const PolylinePoint& a, const PolylinePoint& b, int side) {
@@ -162,6 +167,7 @@ Crossing crossing(const Cell& c, const PolylinePoint& a, const PolylinePoint& b,
     } else {
         x.uv = a.uv + t * (b.uv - a.uv);
         x.xyz = a.xyz + t * (b.xyz - a.xyz);
+        x.removable = !a.keep_crossings && !b.keep_crossings;
         if (side == kLeft || side == kRight)
             x.uv.x() = line, x.uv.y() = std::clamp(x.uv.y(), c.v0, c.v1);
         else
@@ -314,7 +320,7 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
             Piece piece;
             piece.entry = e->entry;
             piece.before = point(s, 0).uv;
-            piece.vertices.push_back(table.add(crossings[e->entry].uv, &crossings[e->entry].xyz));
+            piece.vertices.push_back(table.add(crossings[e->entry].uv, &crossings[e->entry].xyz, crossings[e->entry].removable));
             int current = s;
             const int limit = offset[loop_of[s] + 1] - offset[loop_of[s]] + 1;
             for (int step = 0; step <= limit; ++step) {
@@ -329,7 +335,7 @@ TrimmedCells trim_cells(const CellGrid& grid, const std::vector<TrimPolygon>& lo
                 current = next_segment(current);
             }
             if (piece.exit < 0) continue;  // inconsistent trims; dropped
-            piece.vertices.push_back(table.add(crossings[piece.exit].uv, &crossings[piece.exit].xyz));
+            piece.vertices.push_back(table.add(crossings[piece.exit].uv, &crossings[piece.exit].xyz, crossings[piece.exit].removable));
             for (size_t k = 0; k + 1 < piece.vertices.size(); ++k)
                 if (piece.vertices[k] != piece.vertices[k + 1])
                     result.trim_edges.push_back({piece.vertices[k], piece.vertices[k + 1]});

@@ -24,6 +24,9 @@ struct TrimmedVertex {
     Eigen::Vector2d uv;
     Eigen::Vector3d xyz = Eigen::Vector3d::Zero();  // valid only when on_trim
     bool on_trim = false;  // trim vertex or crossing; grid vertices get S(uv) later
+    // A trim chord's crossing with a cell side that remove_crossings may take (strictly
+    // inside its chord, not a trim point, no keep_crossings at the chord's ends).
+    bool crossing = false;
 };
 
 struct CellPolygon {

@@ -18,6 +18,10 @@ struct PolylinePoint {
     Eigen::Vector3d xyz;  // mesh position (equals S(uv) except on shared edges, where it
                           // is the edge's own point, within the file's edge gap of S(uv))
     double t = 0.0;       // parameter on the coedge's 2D curve
+    // The chords to and from this point keep their cell crossings (remove_crossings.h):
+    // set where the join welds the face's boundary to another face's by position, and
+    // the crossings are points to meet (tessellate_model.cpp, keep_crossings).
+    bool keep_crossings = false;
 };
 
 // One coedge approximated: points in traversal order, first and last included.
