@@ -6,8 +6,10 @@
 // B-spline faces). A crossing c between its trim neighbours a and b is removed by
 // triangulating its fan again without it; the new triangles are kept only when each
 //  - runs counter-clockwise in (u,v) and faces along Su x Sv in 3D;
-//  - is within the bound kd_subdivision gives its cells: over its own (u,v) box,
-//    (M_uu du^2 + 2 M_uv du dv + M_vv dv^2) / 8 (block_error.h, S C^1 inside the box)
+//  - is within the bound kd_subdivision gives its cells: over its own (u,v) box, the
+//    smaller of (M_uu du^2 + 2 M_uv du dv + M_vv dv^2) / 8 (block_error.h, S C^1 inside
+//    the box) and, in one Bezier patch, the cell bound of the patch's piece over the box
+//    (revolution_error with a `shape`, else bilinear_error in `mode`) is
 //    <= interior_tolerance, and that plus the largest offset of its vertices from S
 //    (|x - S(uv)|, computed) <= total_tolerance (tessellation_options.h's shares).
 #pragma once
@@ -19,6 +21,8 @@
 
 #include "geom/nurbs_surface.h"
 #include "mesh/deadline.h"
+#include "tess/revolution_error.h"
+#include "tess/tessellation_options.h"
 
 namespace trimkit::tess {
 
@@ -33,7 +37,7 @@ struct CrossingMesh {
 // Removes the crossings it can from `mesh` (triangles and trim edges rewritten; the
 // vertex arrays keep their entries). Returns how many it removed.
 // `deadline`: checked per crossing; throws mesh::DeadlineExceeded.
-int remove_crossings(const geom::NurbsSurface& S, CrossingMesh& mesh, double interior_tolerance,
-                     double total_tolerance, mesh::Deadline* deadline = nullptr);
+int remove_crossings(const geom::NurbsSurface& S, const RevolutionShape* shape, ErrorMode mode, CrossingMesh& mesh,
+                     double interior_tolerance, double total_tolerance, mesh::Deadline* deadline = nullptr);
 
 }  // namespace trimkit::tess

@@ -132,7 +132,8 @@ mesh::Mesh tessellate(const geom::Face& face, const std::vector<TrimPolygon>& in
     CrossingMesh reduced{std::move(uv), std::move(xyz), std::vector<char>(trimmed.vertices.size()),
                          std::move(triangles), trimmed.trim_edges};
     for (size_t i = 0; i < trimmed.vertices.size(); ++i) reduced.crossing[i] = trimmed.vertices[i].crossing;
-    remove_crossings(face.surface, reduced, interior_tolerance(options), options.tolerance, deadline);
+    remove_crossings(face.surface, shape ? &*shape : nullptr, options.mode, reduced, interior_tolerance(options),
+                     options.tolerance, deadline);
     uv = std::move(reduced.uv);
     triangles = std::move(reduced.triangles);
 

@@ -57,7 +57,7 @@ bool uses(const CrossingMesh& m, int v) {
 TEST(RemoveCrossings, OnAPlaneTheCrossingGoesAndTheRegionStays) {
     const geom::NurbsSurface S = paraboloid(1, true);
     CrossingMesh m = two_cells_cut_by_a_chord(S);
-    EXPECT_EQ(remove_crossings(S, m, 1e-9, 1e-9), 1);
+    EXPECT_EQ(remove_crossings(S, nullptr, ErrorMode::kGuaranteed, m, 1e-9, 1e-9), 1);
     EXPECT_EQ(m.triangles.size(), 3u);  // the crossing's fan of 3 becomes 2
     EXPECT_FALSE(uses(m, 1));
     ASSERT_EQ(m.trim_edges.size(), 1u);
@@ -67,24 +67,25 @@ TEST(RemoveCrossings, OnAPlaneTheCrossingGoesAndTheRegionStays) {
 
 // Every triangulation of the ring 2 3 4 0 without vertex 1 has a triangle on the chord
 // 0 2 reaching v = 1: its box is 1 x 0.7, within (2 * 1 + 2 * 0.49) / 8 = 0.3725 of S
-// (block_error.h) and no less. So the crossing goes at 1.01 times that and stays at
-// 0.99 times.
+// (block_error.h; the control net's bilinear bound of the piece, at least the 0.5 of
+// u^2's net alone, is larger) and no less. So the crossing goes at 1.01 times that and
+// stays at 0.99 times.
 TEST(RemoveCrossings, ACrossingStaysWhereTheMergedTrianglesWouldLeaveTheBound) {
     const geom::NurbsSurface S = paraboloid();
     const double bound = (2.0 * 1.0 + 2.0 * 0.49) / 8.0;
     CrossingMesh kept = two_cells_cut_by_a_chord(S);
-    EXPECT_EQ(remove_crossings(S, kept, 0.99 * bound, 0.99 * bound), 0);
+    EXPECT_EQ(remove_crossings(S, nullptr, ErrorMode::kGuaranteed, kept, 0.99 * bound, 0.99 * bound), 0);
     EXPECT_EQ(kept.triangles, two_cells_cut_by_a_chord(S).triangles);
     EXPECT_EQ(kept.trim_edges.size(), 2u);
     CrossingMesh removed = two_cells_cut_by_a_chord(S);
-    EXPECT_EQ(remove_crossings(S, removed, 1.01 * bound, 1.01 * bound), 1);
+    EXPECT_EQ(remove_crossings(S, nullptr, ErrorMode::kGuaranteed, removed, 1.01 * bound, 1.01 * bound), 1);
     EXPECT_EQ(removed.triangles.size(), 3u);
     // The total bound counts the vertices' offsets from S too: a trim point moved off S
     // by 0.1 leaves no room at 1.01 times the bound.
     CrossingMesh off = two_cells_cut_by_a_chord(S);
     off.xyz[0].z() += 0.1;
-    EXPECT_EQ(remove_crossings(S, off, 1.01 * bound, 1.01 * bound), 0);
-    EXPECT_EQ(remove_crossings(S, off, 1.01 * bound, 1.01 * bound + 0.1), 1);
+    EXPECT_EQ(remove_crossings(S, nullptr, ErrorMode::kGuaranteed, off, 1.01 * bound, 1.01 * bound), 0);
+    EXPECT_EQ(remove_crossings(S, nullptr, ErrorMode::kGuaranteed, off, 1.01 * bound, 1.01 * bound + 0.1), 1);
 }
 
 // A trim point is never removed, even on the chord of its neighbours.
@@ -92,7 +93,7 @@ TEST(RemoveCrossings, TrimPointsStay) {
     const geom::NurbsSurface S = paraboloid(1, true);
     CrossingMesh m = two_cells_cut_by_a_chord(S);
     m.crossing[1] = 0;
-    EXPECT_EQ(remove_crossings(S, m, 1.0, 1.0), 0);
+    EXPECT_EQ(remove_crossings(S, nullptr, ErrorMode::kGuaranteed, m, 1.0, 1.0), 0);
     EXPECT_EQ(m.triangles.size(), 4u);
 }
 
