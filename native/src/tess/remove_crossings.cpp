@@ -5,12 +5,9 @@
 #include <limits>
 
 #include "mesh/triangulate_polygon.h"
-#include "tess/bezier_patch.h"
-#include "tess/bilinear_error.h"
-#include "tess/block_error.h"
 #include "tess/cell_area_loss.h"
-#include "tess/derivative_bounds.h"
 #include "tess/flattened_cell.h"
+#include "tess/triangle_bound.h"
 
 namespace trimkit::tess {
 namespace {
@@ -28,77 +25,9 @@ bool well_shaped(const std::vector<Eigen::Vector2d>& uv, const std::array<int, 3
     return cross(b - a, c - a) > kMinShape * longest;
 }
 
-// Bounds of triangles in (u,v) against S, as kd_subdivision bounds its cells.
-class TriangleBound {
-public:
-    TriangleBound(const geom::NurbsSurface& S, const RevolutionShape* shape, ErrorMode mode)
-        : S_(S), shape_(shape), mode_(mode) {
-        for (const geom::NurbsSurface& bezier : S.bezier_patches()) {
-            patches_.push_back(bezier_patch(bezier));
-            u_.push_back(patches_.back().u0), v_.push_back(patches_.back().v0);
-        }
-        for (auto* x : {&u_, &v_}) {
-            std::sort(x->begin(), x->end());
-            x->erase(std::unique(x->begin(), x->end()), x->end());
-        }
-        at_.assign(u_.size() * v_.size(), -1);
-        for (size_t k = 0; k < patches_.size(); ++k) at_[slot(patches_[k].u0, patches_[k].v0)] = static_cast<int>(k);
-    }
-
-    // The smaller of the second-derivative bound over the triangle's own (u,v) box
-    // (block_error.h; infinite where S is not C^1 inside the box) and, when the box lies
-    // in one Bezier patch, the cell bound of that patch's piece over the box
-    // (revolution_error, else bilinear_error: both hold for any triangle with vertices
-    // on S inside it).
-    double operator()(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) const {
-        Eigen::AlignedBox2d box(a);
-        box.extend(b).extend(c);
-        if (!is_c1_inside(S_, box)) return std::numeric_limits<double>::infinity();
-        const SurfaceDerivativeBounds M = surface_derivative_bounds(S_, box);
-        const Eigen::Vector2d size = box.sizes();
-        double bound = block_error(SecondDerivativeBound{M.Muu, M.Muv, M.Mvv}, size.x(), size.y()).bound;
-        const int k = holding(box);
-        if (k < 0) return bound;
-        const BezierPatch piece =
-            restrict_patch(patches_[k], box.min().x(), box.max().x(), box.min().y(), box.max().y());
-        if (shape_) {
-            const double exact = revolution_error(*shape_, piece, bound).bound;
-            if (std::isfinite(exact)) return std::min(bound, exact);
-        }
-        return std::min(bound, bilinear_error(piece, mode_, bound).bound);
-    }
-
-private:
-    size_t slot(double u0, double v0) const {
-        const auto iu = std::lower_bound(u_.begin(), u_.end(), u0) - u_.begin();
-        const auto iv = std::lower_bound(v_.begin(), v_.end(), v0) - v_.begin();
-        return static_cast<size_t>(iu) * v_.size() + static_cast<size_t>(iv);
-    }
-
-    // The patch whose rectangle holds the box, or -1.
-    int holding(const Eigen::AlignedBox2d& box) const {
-        const auto iu = std::upper_bound(u_.begin(), u_.end(), box.min().x()) - u_.begin() - 1;
-        const auto iv = std::upper_bound(v_.begin(), v_.end(), box.min().y()) - v_.begin() - 1;
-        if (iu < 0 || iv < 0) return -1;
-        const int k = at_[static_cast<size_t>(iu) * v_.size() + static_cast<size_t>(iv)];
-        if (k < 0) return -1;
-        const BezierPatch& p = patches_[k];
-        const bool inside = box.min().x() >= p.u0 && box.max().x() <= p.u1 && box.min().y() >= p.v0 &&
-                            box.max().y() <= p.v1;
-        return inside ? k : -1;
-    }
-
-    const geom::NurbsSurface& S_;
-    const RevolutionShape* shape_;
-    ErrorMode mode_;
-    std::vector<BezierPatch> patches_;
-    std::vector<double> u_, v_;  // the patches' lower sides, ascending
-    std::vector<int> at_;        // patch per (u, v) lower-side pair, -1 where none
-};
-
 class CrossingRemover {
 public:
-    CrossingRemover(const geom::NurbsSurface& S, const TriangleBound& bound, CrossingMesh& mesh, double interior,
+    CrossingRemover(const geom::NurbsSurface& S, TriangleBound& bound, CrossingMesh& mesh, double interior,
                     double total)
         : S_(S), bound_(bound), mesh_(mesh), interior_(interior), total_(total),
           offset_(mesh.uv.size(), -1.0), triangles_of_(mesh.uv.size()), edges_of_(mesh.uv.size()) {
@@ -211,13 +140,14 @@ private:
         if (triangles.empty()) return false;
         for (const auto& t : triangles)
             if (!well_shaped(mesh_.uv, t)) return false;
-        if (has_backward_triangle(S_, mesh_.uv, mesh_.xyz, triangles)) return false;
         for (const auto& t : triangles) {
-            const double bound = bound_(mesh_.uv[t[0]], mesh_.uv[t[1]], mesh_.uv[t[2]]);
+            Eigen::AlignedBox2d box(mesh_.uv[t[0]]);
+            const double bound = bound_(box.extend(mesh_.uv[t[1]]).extend(mesh_.uv[t[2]]));
+            if (!(bound <= interior_)) return false;
             const double off = std::max({offset(t[0]), offset(t[1]), offset(t[2])});
-            if (!(bound <= interior_) || !(bound + off <= total_)) return false;
+            if (!(bound + off <= total_)) return false;
         }
-        return true;
+        return !has_backward_triangle(S_, mesh_.uv, mesh_.xyz, triangles);
     }
 
     void replace(int c, const std::vector<std::array<int, 3>>& triangles) {
@@ -238,7 +168,7 @@ private:
     }
 
     const geom::NurbsSurface& S_;
-    const TriangleBound& bound_;
+    TriangleBound& bound_;
     SurfaceEvaluator evaluator_{S_};
     CrossingMesh& mesh_;
     double interior_, total_;
@@ -250,7 +180,7 @@ private:
 
 int remove_crossings(const geom::NurbsSurface& S, const RevolutionShape* shape, ErrorMode mode, CrossingMesh& mesh,
                      double interior_tolerance, double total_tolerance, mesh::Deadline* deadline) {
-    const TriangleBound bound(S, shape, mode);
+    TriangleBound bound(S, shape, mode, interior_tolerance);
     CrossingRemover remover(S, bound, mesh, interior_tolerance, total_tolerance);
     int removed = 0;
     for (size_t v = 0; v < mesh.uv.size(); ++v) {
