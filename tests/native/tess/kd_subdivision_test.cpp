@@ -59,18 +59,7 @@ TEST(KdSubdivision, TrimAwareTolerancesAndNoWorkOutsideTheLoops) {
                       boundary * (1 + 1e-9));
 }
 
-// x = u, y = v, z = u^2 + v^2 on [0,1]^2 as a biquadratic Bezier patch (z's control
-// values a_i + a_j, a = (0, 0, 1)) with the knots k / spans inserted each way, C^1
-// across them; or plane z = 0 when `flat`.
-geom::NurbsSurface paraboloid(int spans, bool flat = false) {
-    std::vector<Eigen::Vector3d> P;
-    const double a[3] = {0, 0, 1};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) P.emplace_back(0.5 * i, 0.5 * j, flat ? 0.0 : a[i] + a[j]);
-    geom::NurbsSurface S(2, 2, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}, 3, 3, P);
-    for (int k = 1; k < spans; ++k) S = S.insert_knot_u(double(k) / spans).insert_knot_v(double(k) / spans);
-    return S;
-}
+using test::paraboloid;
 
 bool crosses_knot_line(const Cell& c, int spans) {
     for (int k = 1; k < spans; ++k) {

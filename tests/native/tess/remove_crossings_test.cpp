@@ -14,17 +14,7 @@
 namespace trimkit::tess {
 namespace {
 
-// S(u,v) = (u, v, u^2 + v^2) over [0,1]^2 (flat: z = 0), `spans` knot spans each way:
-// S_uu = S_vv = (0, 0, 2), S_uv = 0.
-geom::NurbsSurface paraboloid(int spans = 1, bool flat = false) {
-    std::vector<Eigen::Vector3d> P;
-    const double a[3] = {0, 0, 1};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) P.emplace_back(0.5 * i, 0.5 * j, flat ? 0.0 : a[i] + a[j]);
-    geom::NurbsSurface S(2, 2, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}, 3, 3, P);
-    for (int k = 1; k < spans; ++k) S = S.insert_knot_u(double(k) / spans).insert_knot_v(double(k) / spans);
-    return S;
-}
+using test::paraboloid;
 
 // Two cells [0, 0.5] x [0, 1] and [0.5, 1] x [0, 1], trimmed to v >= 0.3 by the chord
 // from (0, 0.3) to (1, 0.3), which crosses their common side at vertex 1.

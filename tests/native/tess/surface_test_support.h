@@ -34,6 +34,21 @@ inline geom::NurbsSurface bilinear_patch() {
                               {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0.5}});
 }
 
+// x = u, y = v, z = u^2 + v^2 on [0,1]^2 as a biquadratic Bezier patch (z's control
+// values a_i + a_j, a = (0, 0, 1)), or the plane z = 0 when `flat`, with the knots
+// k / spans inserted `multiplicity` times each way: C^1 across them once, C^0 twice.
+// S_uu = S_vv = (0, 0, 2), S_uv = 0.
+inline geom::NurbsSurface paraboloid(int spans = 1, bool flat = false, int multiplicity = 1) {
+    std::vector<Eigen::Vector3d> P;
+    const double a[3] = {0, 0, 1};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) P.emplace_back(0.5 * i, 0.5 * j, flat ? 0.0 : a[i] + a[j]);
+    geom::NurbsSurface S(2, 2, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}, 3, 3, P);
+    for (int k = 1; k < spans; ++k)
+        for (int m = 0; m < multiplicity; ++m) S = S.insert_knot_u(double(k) / spans).insert_knot_v(double(k) / spans);
+    return S;
+}
+
 inline PolylinePoint on_surface(const geom::NurbsSurface& S, double u, double v) {
     PolylinePoint p;
     p.uv = {u, v};
