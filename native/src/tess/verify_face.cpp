@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "geom/error.h"
+#include "tess/lift_trim_curve.h"
 #include "tess/snap_boundary_vertices.h"
 #include "tess/triangle_bvh.h"
 #include "tess/unpaired_sides.h"
@@ -70,8 +71,11 @@ constexpr double kRoundingShare = 1e-6;
 constexpr double kRoundingRelative = 1e-12;
 
 // ---- Sampling the trim curves in 3D ----
-// Intervals per Bézier span of a coedge's curve to start with (two, so an S-shaped
-// span is halved where its middle lies on its chord), and at least per coedge.
+// Intervals per piece of a coedge's curve to start with (two, so an S-shaped piece is
+// halved where its middle lies on its chord), and at least per coedge. The pieces are
+// trim_curve_breaks': the curve's spans cut where it crosses the surface's knot lines,
+// so a straight (u,v) line across many surface spans (an iso-line edge of a terrain)
+// starts with two samples per surface span, not 8 for its whole length.
 constexpr int kSpanIntervals = 2, kMinCoedgeIntervals = 8;
 // An interval is halved while S(c(t)) at its middle lies more than this share of T
 // from its chord, at most kMaxHalvings times (1024 pieces of a starting interval),
@@ -101,7 +105,7 @@ std::vector<double> breaks(const std::vector<double>& U, double a, double b) {
 std::vector<CurveSample> sample_coedge(const geom::NurbsSurface& S, const geom::NurbsCurve2d& c,
                                        double chord_tolerance) {
     const auto [a, b] = c.domain();
-    const std::vector<double> t = breaks(c.knots(), a, b);
+    const std::vector<double> t = trim_curve_breaks(S, c);
     const int spans = static_cast<int>(t.size()) - 1;
     const int per = std::max(kSpanIntervals, (kMinCoedgeIntervals + spans - 1) / spans);
     const auto at = [&](double s) {

@@ -243,6 +243,52 @@ TEST(VerifyFace, ZeroWidthSpikeOfALoopNeedNotBeMeshed) {
     EXPECT_LE(v.loop_gap, 0.0025 * 1.01);
 }
 
+// A terrain-like face (MAT.brep, terrain.brep among OCCT's samples): its edges are
+// straight (u,v) lines of one span across the 64 spans of a wavy surface. Sampled
+// per span of the line alone (8 intervals, each 8 surface spans long), every sample
+// and every halving midpoint fell on the same crest and the reference trim curve
+// came out straight: the correct mesh "lay 0.7 from every trim loop" and the face
+// failed. Sampled per surface span it passes, with the curves' true length.
+TEST(VerifyFace, StraightTrimAcrossManySurfaceSpansIsSampledPerSurfaceSpan) {
+    // Degree 1 x 3: x = 4u, y along v, z = h (-1)^j at pole j: a ridge at every pole.
+    constexpr int kSpans = 64;
+    constexpr double kDepth = 4.0, kRidge = 1.0, T = 0.05;
+    std::vector<double> V{0, 0, 0, 0};
+    for (int k = 1; k < kSpans; ++k) V.push_back(k);
+    for (int k = 0; k < 4; ++k) V.push_back(kSpans);
+    const int nv = kSpans + 3;
+    std::vector<Eigen::Vector3d> P;
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < nv; ++j) P.emplace_back(kDepth * i, j, kRidge * (j % 2 == 0 ? 1 : -1));
+    geom::Face face;
+    face.surface = geom::NurbsSurface(1, 3, {0, 0, 1, 1}, V, 2, nv, P);
+    face.loops.push_back(geom::natural_boundary_loop(face.surface));
+
+    // The boundary's length, derived: two straight sides of 4 and twice the wavy
+    // curve's length by 1e5 chords (converged far below the tolerance asserted).
+    double wavy = 0.0;
+    for (int k = 0; k < 100000; ++k)
+        wavy += (face.surface.evaluate(0, kSpans * (k + 1) / 1e5) - face.surface.evaluate(0, kSpans * k / 1e5)).norm();
+    const double perimeter = 2.0 * kDepth + 2.0 * wavy;
+    ASSERT_GT(wavy, 1.2 * (nv - 1));  // the waves (+-h/3 at the knots) lengthen it by a fifth
+
+    const std::vector<TrimPolygon> polygons = polygons_of(face, T);
+    const mesh::Mesh m = tessellate_face(face, polygons, at(T), 0);
+    const FaceVerification v = verify_face(face, m, polygons, T, 0);
+    EXPECT_TRUE(v.passed()) << v.reason;
+    EXPECT_LE(v.boundary_gap, 0.45 * T);  // the trim tolerance and the samples' chords
+    EXPECT_LE(v.loop_gap, trim_tolerance(at(T)) * 1.01);
+    // Chords of the samples (<= 0.2 T off the curve) are shorter than the curve, never longer.
+    EXPECT_LE(v.perimeter, perimeter * (1.0 + 1e-12));
+    EXPECT_GE(v.perimeter, 0.99 * perimeter);
+
+    geom::Model model;
+    model.faces.push_back(face);
+    const TessellationResult r = tessellate_model(model, at(T));
+    EXPECT_TRUE(r.failed_faces.empty()) << r.failed_faces[0].reason;
+    EXPECT_EQ(r.faces_meshed, 1);
+}
+
 TEST(VerifyFace, RejectsANonPositiveTolerance) {
     const geom::Face face = plate();
     const std::vector<TrimPolygon> polygons = polygons_of(face, 0.01);
