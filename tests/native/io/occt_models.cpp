@@ -129,6 +129,52 @@ void write_damaged_cylinder_face_brep(const std::string& path, double R, double 
     if (!BRepTools::Write(face, path.c_str())) throw std::runtime_error("cannot write " + path);
 }
 
+void write_slow_corner_face_brep(const std::string& path, double L, double gap) {
+    TColgp_Array2OfPnt poles(1, 3, 1, 2);
+    const double x[3] = {0, 0, L};
+    for (int i = 1; i <= 3; ++i)
+        for (int j = 1; j <= 2; ++j) poles(i, j) = gp_Pnt(x[i - 1], L * (j - 1), 0);
+    TColStd_Array1OfReal knots(1, 2);
+    knots(1) = 0;
+    knots(2) = 1;
+    TColStd_Array1OfInteger mults_u(1, 2), mults_v(1, 2);
+    mults_u(1) = mults_u(2) = 3;
+    mults_v(1) = mults_v(2) = 2;
+    Handle(Geom_BSplineSurface) surface = new Geom_BSplineSurface(poles, knots, knots, mults_u, mults_v, 2, 1);
+    BRep_Builder b;
+    const double corner = L * gap * gap, vertex_tolerance = 2 * corner;
+    TopoDS_Vertex v00, v10, v11, v01;
+    b.MakeVertex(v00, gp_Pnt(0, 0, 0), vertex_tolerance);
+    b.MakeVertex(v10, gp_Pnt(L, 0, 0), 1e-7);
+    b.MakeVertex(v11, gp_Pnt(L, L, 0), 1e-7);
+    b.MakeVertex(v01, gp_Pnt(0, L, 0), 1e-7);
+    TopoDS_Face face;
+    b.MakeFace(face, surface, 1e-7);
+    // Straight edges; each p-curve a line in (u,v) over the edge's own range.
+    auto edge = [&](const gp_Pnt& p, const gp_Pnt& q, const TopoDS_Vertex& a, const TopoDS_Vertex& z,
+                    const gp_Pnt2d& s, const gp_Pnt2d& t) {
+        TopoDS_Edge e;
+        b.MakeEdge(e, GC_MakeSegment(p, q).Value(), vertex_tolerance);
+        b.Add(e, a.Oriented(TopAbs_FORWARD));
+        b.Add(e, z.Oriented(TopAbs_REVERSED));
+        const double length = p.Distance(q);
+        b.Range(e, 0, length);
+        const gp_Vec2d d(s, t);
+        b.UpdateEdge(e, new Geom2d_Line(s, gp_Dir2d(d)), face, vertex_tolerance);
+        b.Range(e, face, 0, d.Magnitude());
+        return e;
+    };
+    const TopoDS_Edge bottom = edge(gp_Pnt(corner, 0, 0), gp_Pnt(L, 0, 0), v00, v10, {gap, 0}, {1, 0});
+    const TopoDS_Edge right = edge(gp_Pnt(L, 0, 0), gp_Pnt(L, L, 0), v10, v11, {1, 0}, {1, 1});
+    const TopoDS_Edge top = edge(gp_Pnt(L, L, 0), gp_Pnt(0, L, 0), v11, v01, {1, 1}, {0, 1});
+    const TopoDS_Edge left = edge(gp_Pnt(0, L, 0), gp_Pnt(0, 0, 0), v01, v00, {0, 1}, {0, 0});
+    TopoDS_Wire wire;
+    b.MakeWire(wire);
+    for (const TopoDS_Edge& e : {bottom, right, top, left}) b.Add(wire, e);
+    b.Add(face, wire);
+    if (!BRepTools::Write(face, path.c_str())) throw std::runtime_error("cannot write " + path);
+}
+
 void write_bspline_face_past_domain_brep(const std::string& path, double L, double m) {
     TColgp_Array2OfPnt poles(1, 2, 1, 2);
     for (int i = 1; i <= 2; ++i)

@@ -36,6 +36,12 @@ void write_damaged_cylinder_face_brep(const std::string& path, double R, double 
 // every side (as real files trim B-splines slightly outside their domain), as .brep.
 void write_bspline_face_past_domain_brep(const std::string& path, double L, double m);
 
+// The square [0, L]^2 (z = 0) as a B-spline face x = L u^2, y = L v over [0, 1]^2,
+// whose parametrization hardly moves along u near u = 0: the bottom edge's p-curve
+// starts at (gap, 0) while the left edge's ends at (0, 0), a (u,v) gap of `gap` but
+// a 3D gap of L gap^2 (inside the vertex's tolerance), as Bottom.brep's blend corner.
+void write_slow_corner_face_brep(const std::string& path, double L, double gap);
+
 // An assembly "pair" of one part "block" (box dx x dy x dz at the origin) placed twice,
 // translated by t1 and by t2 (the second also turned by 90° about z), as STEP (XCAF).
 void write_box_assembly_step(const std::string& path, double dx, double dy, double dz,
