@@ -261,7 +261,7 @@ def tessellate(model, tolerance, *, relative=False, angle=np.radians(30.0), mode
     split = "BODY" if model.instances else split
     options = native().TessellationOptions(
         tolerance=absolute_tolerance(model, tolerance, relative), angle=angle,
-        mode=mode, trim_method=trim_method)
+        mode=mode, trim_method=trim_method, area_per_body=split != "MODEL")
     limits_module.apply(options, limits)
     try:
         result = native().tessellate_model(model, options)

@@ -44,7 +44,8 @@ tess::TrimMethod method_from_name(const std::string& name) {
 }
 
 tess::TessellationOptions make_options(double tolerance, double angle, const std::string& mode,
-                                       const std::string& trim_method, int threads, double face_timeout) {
+                                       const std::string& trim_method, int threads, double face_timeout,
+                                       bool area_per_body) {
     tess::TessellationOptions options;
     options.tolerance = tolerance;
     options.angle = angle;
@@ -52,6 +53,7 @@ tess::TessellationOptions make_options(double tolerance, double angle, const std
     options.trim_method = method_from_name(trim_method);
     options.threads = threads;
     options.face_timeout = face_timeout;
+    options.area_per_body = area_per_body;
     return options;
 }
 
@@ -113,7 +115,7 @@ void bind_tess(py::module_& m) {
         .def(py::init(&make_options), py::arg("tolerance") = defaults.tolerance,
              py::arg("angle") = defaults.angle, py::arg("mode") = mode_name(defaults.mode),
              py::arg("trim_method") = method_name(defaults.trim_method), py::arg("threads") = defaults.threads,
-             py::arg("face_timeout") = defaults.face_timeout)
+             py::arg("face_timeout") = defaults.face_timeout, py::arg("area_per_body") = defaults.area_per_body)
         .def_readwrite("tolerance", &tess::TessellationOptions::tolerance)
         .def_readwrite("angle", &tess::TessellationOptions::angle)
         .def_property(
@@ -126,6 +128,8 @@ void bind_tess(py::module_& m) {
         .def_readwrite("face_timeout", &tess::TessellationOptions::face_timeout,
                        "seconds one face may take; a face that takes longer fails with defect 'timeout' "
                        "(0 = no limit)")
+        .def_readwrite("area_per_body", &tess::TessellationOptions::area_per_body,
+                       "the area budget per body (each body an object of its own); else one for the model")
         .def_property(
             "cancel", [](const tess::TessellationOptions&) { return py::none(); },
             py::cpp_function(

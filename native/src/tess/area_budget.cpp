@@ -101,7 +101,7 @@ bool tighten_group(const std::vector<int>& group, const std::vector<FaceArea>& f
 
 }  // namespace
 
-std::vector<std::vector<int>> area_groups(const geom::Model& model) {
+std::vector<std::vector<int>> part_groups(const geom::Model& model) {
     std::vector<std::vector<int>> groups;
     std::vector<char> in_body(model.faces.size(), 0);
     for (const geom::Body& body : model.bodies) {
@@ -118,6 +118,14 @@ std::vector<std::vector<int>> area_groups(const geom::Model& model) {
         if (!in_body[f]) rest.push_back(static_cast<int>(f));
     if (!rest.empty()) groups.push_back(std::move(rest));
     return groups;
+}
+
+std::vector<std::vector<int>> area_groups(const geom::Model& model, bool per_body) {
+    if (per_body) return part_groups(model);
+    if (model.faces.empty()) return {};
+    std::vector<int> all(model.faces.size());
+    for (size_t f = 0; f < all.size(); ++f) all[f] = static_cast<int>(f);
+    return {all};
 }
 
 double worst_loss_share(const std::vector<std::vector<int>>& groups, const std::vector<FaceArea>& faces) {

@@ -3,9 +3,10 @@
 // inside them: trim_area_loss.h, cell_area_loss.h), by about e / 3R of a face of
 // radius R whose chords deviate by e, so a thin part whose cells spend all of T
 // loses more of its area than the 0.2 % a check allows (issue 9), although every
-// point is within T. Each part (geom::Body) gets a budget, a share of its area; a
-// part over budget has its faces that lose most for their area meshed again with
-// finer trims and cells, until the part is within it. A face's loss falls about
+// point is within T. The model gets a budget, a share of its area (or each part,
+// geom::Body, of its own, when each is handed out as an object: area_groups); a
+// group over budget has its faces that lose most for their area meshed again with
+// finer trims and cells, until it is within it. A face's loss falls about
 // linearly with its trims' or cells' tolerance t, while their points grow as
 // 1/sqrt(t) (chords of curves, cells curved one way) to 1/t (cells curved both
 // ways): the trims or cells that lose most per point they have buy the most area
@@ -33,7 +34,11 @@ struct FaceScales {
 
 // The faces of each part of `model`: one group per body, and one for faces in no
 // body (all faces when the model has no bodies).
-std::vector<std::vector<int>> area_groups(const geom::Model& model);
+std::vector<std::vector<int>> part_groups(const geom::Model& model);
+
+// The groups of faces that get a budget each: with per_body the parts (part_groups),
+// else one group of all the model's faces.
+std::vector<std::vector<int>> area_groups(const geom::Model& model, bool per_body);
 
 // |Loss| over area of the group whose area is furthest off, lost or gained (0 when none is).
 double worst_loss_share(const std::vector<std::vector<int>>& groups, const std::vector<FaceArea>& faces);

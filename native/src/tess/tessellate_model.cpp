@@ -784,7 +784,7 @@ TessellationResult tessellate_pass(const geom::Model& model, const TessellationO
     return result;
 }
 
-// Joins the faces of a pass's mesh by position, each part (`groups`: area_groups) on
+// Joins the faces of a pass's mesh by position, each part (`groups`: part_groups) on
 // its own: snaps open-boundary vertices within `weld_distance` (never collapsing a
 // triangle, never moving a vertex by more than it), closes T-junctions between faces,
 // flags edges, counts open edges. Vertices stay per face. Parts are not joined to each
@@ -874,7 +874,7 @@ TessellationResult tessellate_sewn(const geom::Model& model, const TessellationO
     const double weld_distance = kWeldShare * options.tolerance;
     TessellationOptions face_options = options;
     face_options.tolerance = face_tolerance(options);
-    const std::vector<std::vector<int>> groups = area_groups(model);
+    const std::vector<std::vector<int>> groups = area_groups(model, options.area_per_body);
     const std::vector<double> ones(model.faces.size(), 1.0);
     FaceScales scale{ones, ones};
     std::vector<FaceArea> areas;
@@ -923,7 +923,7 @@ TessellationResult tessellate_sewn(const geom::Model& model, const TessellationO
                                   " face(s) meshed again with finer trims and cells (now " +
                                   geom::format_value(100.0 * worst) + " %)");
     }
-    join_pass(result, face_options, weld_distance, scale, groups);
+    join_pass(result, face_options, weld_distance, scale, part_groups(model));
     result.tolerance = options.tolerance;
     return result;
 }

@@ -34,6 +34,11 @@ struct TessellationOptions {
     // trimming, triangulation, verification); a face that takes longer is stopped at
     // the next check and reported in failed_faces with defect "timeout". 0 = no limit.
     double face_timeout = kDefaultFaceTimeout;
+    // The area budget (area_budget.h) per body, for callers that hand each body out as
+    // an object of its own (Blender's split by body); else one budget for the whole
+    // model, as one mesh file (a bearing's balls, T = 5 % of their radius, then lose
+    // what T allows them while the bearing stays within the budget).
+    bool area_per_body = false;
     // Set from any thread to stop the tessellation: faces stop at their next check and
     // tessellate_model throws TessellationCancelled. nullptr: not cancellable.
     const std::atomic<bool>* cancel = nullptr;
