@@ -3,6 +3,8 @@
 //   [--face-timeout SECONDS] [--read-timeout SECONDS] [--json] [--strict]
 // Each face left out of the mesh (failed_faces) gets one stderr line,
 // "trimkit: MODEL: face N: reason"; the mesh of the other faces is still written.
+// The reader's own warnings (a face it could not translate: "face 32 skipped: ...")
+// get one stderr line each too, the first kListedWarnings of them.
 // --strict: exit status 3 when any face failed.
 #include <chrono>
 #include <cmath>
@@ -29,7 +31,7 @@ const char* const kMeshUsage =
 // Exit status of --strict when a face failed (0 success, 1 internal, 2 bad input).
 constexpr int kFailedFacesStatus = 3;
 // Warnings listed one per stderr line before the rest are counted.
-constexpr int kListedWarnings = 10;
+constexpr size_t kListedWarnings = 10;
 
 using Clock = std::chrono::steady_clock;
 
@@ -112,6 +114,8 @@ int run_mesh(const std::vector<std::string>& argv) {
              << ", \"vertices\": " << result.mesh.vertex_count() << ", \"open_edges\": " << result.open_edges
              << ", \"tolerance\": " << json_number(result.tolerance) << ", \"warnings\": [";
         for (size_t k = 0; k < result.warnings.size(); ++k) json << (k ? ", " : "") << json_string(result.warnings[k]);
+        json << "], \"read_warnings\": [";
+        for (size_t k = 0; k < model.warnings.size(); ++k) json << (k ? ", " : "") << json_string(model.warnings[k]);
         json << "]"
              << ", \"seconds\": {\"read\": " << json_number(read_seconds)
              << ", \"trim\": " << json_number(result.seconds.trim)
@@ -127,14 +131,19 @@ int run_mesh(const std::vector<std::string>& argv) {
                   << result.open_edges << " open edges, tolerance " << result.tolerance << ", "
                   << total << " s\n";
     }
+    for (size_t k = 0; k < model.warnings.size() && k < kListedWarnings; ++k)
+        std::cerr << "trimkit: " << path << ": warning: " << model.warnings[k] << "\n";
+    if (model.warnings.size() > kListedWarnings)
+        std::cerr << "trimkit: " << path << ": warning: " << model.warnings.size() - kListedWarnings
+                  << " more warnings from reading the file (trimkit info lists them)\n";
     // Edges farther from a face than the tolerance: the mesh is within the file's own
     // edge gap there, not within T; say so, however the output is asked for.
     int off_face_edges = 0;
     for (const std::string& warning : result.warnings) {
         if (warning.find("(more than the tolerance") == std::string::npos) continue;
-        if (++off_face_edges <= kListedWarnings) std::cerr << "trimkit: " << path << ": warning: " << warning << "\n";
+        if (++off_face_edges <= static_cast<int>(kListedWarnings)) std::cerr << "trimkit: " << path << ": warning: " << warning << "\n";
     }
-    if (off_face_edges > kListedWarnings)
+    if (off_face_edges > static_cast<int>(kListedWarnings))
         std::cerr << "trimkit: " << path << ": warning: " << off_face_edges - kListedWarnings
                   << " more edges lie farther than the tolerance from a face (--json lists them)\n";
     for (const tess::FailedFace& failed : result.failed_faces) {
