@@ -148,6 +148,7 @@ def link_file(context, prepared, settings, progress=None):
     path, model, data, result, scale = prepared.path, prepared.model, prepared.data, prepared.result, prepared.scale
     placements = io.placements(model, scale)
     line, warnings = size_report(path, model, settings.units, result.parts, context.scene)
+    warnings += [f"{path.name}: {w}" for w in model.warnings]  # the reader's (a face it skipped)
     text = stored_source.store(path.name, data, path.resolve(), model)
     collection = new_collection(context.collection, path.stem) if placements else context.collection
     assemblies = {(): collection}

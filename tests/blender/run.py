@@ -256,6 +256,20 @@ def test_failed_face_is_recorded_on_every_object_of_its_body():
         retessellate_with_tolerance(objects, 0.5)
 
 
+def test_face_the_reader_skips_is_in_the_import_report_and_panel():
+    # A 144 face whose surface pointer names a curve: the reader skips it with a
+    # warning; the object of the other face carries that warning where the user sees it.
+    sys.path.insert(0, str(ROOT / "tests" / "python"))
+    from iges_samples import write_skipped_face_file
+    path, bad = write_skipped_face_file(TMP / "skipped_face.igs")
+    empty_scene()
+    [obj] = import_iges(path, relative=False, tolerance=0.05, split='MODEL')
+    [line] = [x for x in obj.trimkit.import_report.splitlines() if f"D{bad}" in x]
+    assert line.startswith("skipped_face.igs: ") and "skipped" in line, line
+    assert line in panel_labels(obj), panel_labels(obj)
+    print(f"    reader's warning shown: {line[:90]}")
+
+
 def test_saved_blend_remeshes_after_moving_it_and_the_source():
     empty_scene()
     source = TMP / "moved_source" / "bracket.igs"

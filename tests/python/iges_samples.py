@@ -56,6 +56,23 @@ def write_stray_hole_plate(path, instances=()):
     return str(path)
 
 
+def write_skipped_face_file(path):
+    """A plane (128, read as a face) and a 144 face whose surface pointer names a curve:
+    the reader skips the 144 with a warning naming it. Returns (path, the 144's DE)."""
+    m = iges_writer()
+    w = m.IgesWriter()
+    pts, wts, knots = m.circle_nurbs(30.0, 30.0, 20.0)
+    curve = w.add(126, m.curve126(pts, wts, knots, 2), status="00010000")
+    plane = [1, 1, 1, 1, 0, 0, 1, 0, 0, 0, 0, 100, 100, 0, 0, 60, 60, 1.0, 1.0, 1.0, 1.0,
+             0.0, 0.0, 0.0, 100.0, 0.0, 0.0, 0.0, 60.0, 0.0, 100.0, 60.0, 0.0, 0.0, 100.0, 0.0, 60.0]
+    w.add(128, plane)
+    loop = w.add(142, [1, curve, curve, curve, 1], status="00010000")
+    bad = w.add(144, [curve, 1, 0, loop])
+    path = pathlib.Path(path)
+    path.write_text(w.text(path.name))
+    return str(path), bad
+
+
 def write_bracket_assembly(path, instances):
     """samples/bracket.igs's two faces (the plate with a hole, the quarter cylinder) as one
     308 subfigure, placed by a 408 per (x, y, z, scale) in `instances`: one body, a

@@ -8,7 +8,7 @@ import subprocess
 import pytest
 
 from conftest import TRIMKIT
-from iges_samples import iges_writer, STRAY_HOLE_AREA, write_stray_hole_plate
+from iges_samples import STRAY_HOLE_AREA, write_skipped_face_file, write_stray_hole_plate
 
 
 # Exact areas of samples/bracket.igs: a 100 x 60 plate with a radius-10 hole, and a
@@ -72,20 +72,10 @@ def test_failed_face_is_reported_with_its_figures(tmp_path):
 
 
 def test_face_the_reader_skips_is_reported_on_stderr(tmp_path):
-    """A 144 face whose surface pointer names a curve cannot be read: the reader skips
-    it with a warning, which `mesh` prints (and lists in the JSON), not only `info`."""
-    m = iges_writer()
-    w = m.IgesWriter()
-    pts, wts, knots = m.circle_nurbs(30.0, 30.0, 20.0)
-    curve = w.add(126, m.curve126(pts, wts, knots, 2), status="00010000")
-    plane = [1, 1, 1, 1, 0, 0, 1, 0, 0, 0, 0, 100, 100, 0, 0, 60, 60, 1.0, 1.0, 1.0, 1.0,
-             0.0, 0.0, 0.0, 100.0, 0.0, 0.0, 0.0, 60.0, 0.0, 100.0, 60.0, 0.0, 0.0, 100.0, 0.0, 60.0]
-    w.add(128, plane)
-    loop = w.add(142, [1, curve, curve, curve, 1], status="00010000")
-    bad = w.add(144, [curve, 1, 0, loop])
-    model = tmp_path / "skipped_face.igs"
-    model.write_text(w.text(model.name))
-    result = run_mesh(str(model), "-o", str(tmp_path / "out.ply"), "--tolerance", "0.05", "--json")
+    """A face the reader cannot read is skipped with a warning, which `mesh` prints (and
+    lists in the JSON), not only `info`."""
+    model, bad = write_skipped_face_file(tmp_path / "skipped_face.igs")
+    result = run_mesh(model, "-o", str(tmp_path / "out.ply"), "--tolerance", "0.05", "--json")
     assert result.returncode == 0, result.stderr
     mesh = json.loads(result.stdout)
     assert mesh["faces"] == 1 and mesh["faces_meshed"] == 1
