@@ -13,7 +13,10 @@
 // variable-radius fillet; round 4 a boss across a sphere's seam, a pipe elbow, a plate
 // with a grid of holes and notches, a turned shaft, an equal-radius tee, a slotted tube,
 // a cone capped by a sphere, a part 0.06 mm across, one 5e5 from the origin and a
-// drafted box.)
+// drafted box; round 5 (2026-12-05, after OCCT's own sample .brep files) a wavy block
+// whose top is a B-spline of many spans edged by iso-lines, a boss fused onto it, an
+// open shell, two solids in one file, a box sewn from faces 2e-4 apart, and a STEP
+// file in inches.)
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
@@ -37,6 +40,7 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
@@ -516,6 +520,78 @@ TopoDS_Shape drafted_box() {
     return draft.Shape();
 }
 
+// A block whose top is a wavy B-spline of many spans (heights sampled on 41 x 31 points):
+// its four top edges are iso-lines crossing every span (OCCT's terrain.brep), its sides
+// extrusions of B-spline curves; a hole through it.
+TopoDS_Shape wavy_block() {
+    TColgp_Array2OfPnt grid(1, 41, 1, 31);
+    for (int i = 1; i <= 41; ++i)
+        for (int j = 1; j <= 31; ++j)
+            grid.SetValue(i, j, gp_Pnt(2.0 * (i - 1), 2.0 * (j - 1),
+                                       3 * std::sin(0.9 * i) * std::cos(0.7 * j) + 0.5 * std::sin(2.3 * i + j)));
+    Handle(Geom_BSplineSurface) top = GeomAPI_PointsToBSplineSurface(grid, 3, 8, GeomAbs_C2, 1e-3).Surface();
+    TopoDS_Shape block = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(top, 1e-6).Face(), gp_Vec(0, 0, -15)).Shape();
+    return cut(block, BRepPrimAPI_MakeCylinder(axis_at(50, 30, -40), 5, 60).Shape());
+}
+
+// A cylindrical boss fused onto the wavy block's top: its rim is an intersection curve
+// on the many-span B-spline, approximated with p-curves on both faces.
+TopoDS_Shape boss_on_wavy_block() {
+    return fuse(wavy_block(), BRepPrimAPI_MakeCylinder(axis_at(20, 30, -5), 6, 15).Shape());
+}
+
+// A box without its top: an open shell (a surface model, no solid).
+TopoDS_Shape open_box_shell() {
+    const TopoDS_Shape box = fillet_all(BRepPrimAPI_MakeBox(60, 40, 30).Shape(), 3.0);
+    BRep_Builder b;
+    TopoDS_Shell shell;
+    b.MakeShell(shell);
+    for (TopExp_Explorer e(box, TopAbs_FACE); e.More(); e.Next()) {
+        BRepAdaptor_Surface s(TopoDS::Face(e.Current()));
+        const bool top = s.GetType() == GeomAbs_Plane && s.Plane().Location().Z() > 29.9 &&
+                         std::abs(s.Plane().Axis().Direction().Z()) > 0.99;
+        if (!top) b.Add(shell, e.Current());
+    }
+    return shell;
+}
+
+// Two solids apart in one file (a compound): a pierced sphere and a chamfered box.
+TopoDS_Shape two_solids() {
+    BRep_Builder b;
+    TopoDS_Compound both;
+    b.MakeCompound(both);
+    b.Add(both, cut(BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 0), 15).Shape(),
+                    BRepPrimAPI_MakeCylinder(axis_at(0, 0, -20), 4, 40).Shape()));
+    TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(40, -10, -10), 30, 20, 20).Shape();
+    BRepFilletAPI_MakeChamfer chamfer(box);
+    for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) chamfer.Add(2.0, TopoDS::Edge(e.Current()));
+    b.Add(both, chamfer.Shape());
+    return both;
+}
+
+// A filleted box's faces moved apart by up to 2e-4 and sewn again with tolerance 1e-3
+// (files from systems that export faces, not a solid): edges with tolerances ~1e-4.
+TopoDS_Shape sewn_patchwork() {
+    const TopoDS_Shape box = fillet_all(BRepPrimAPI_MakeBox(50, 40, 30).Shape(), 5.0);
+    BRepBuilderAPI_Sewing sewing(1e-3);
+    int k = 0;
+    for (TopExp_Explorer e(box, TopAbs_FACE); e.More(); e.Next(), ++k) {
+        gp_Trsf t;
+        t.SetTranslation(gp_Vec(1e-4 * std::sin(k), 1e-4 * std::cos(1.7 * k), 1e-4 * std::sin(2.9 * k)));
+        sewing.Add(transformed(e.Current(), t));
+    }
+    sewing.Perform();
+    TopoDS_Shape sewn = sewing.SewedShape();
+    for (TopExp_Explorer e(sewn, TopAbs_SHELL); e.More(); e.Next()) {
+        BRep_Builder b;
+        TopoDS_Solid solid;
+        b.MakeSolid(solid);
+        b.Add(solid, e.Current());
+        return solid;
+    }
+    return sewn;
+}
+
 struct Part {
     const char* name;
     std::function<TopoDS_Shape()> make;
@@ -539,7 +615,10 @@ std::vector<Part> parts() {
             {"holes_grid_plate", holes_grid_plate},       {"turned_shaft", turned_shaft},
             {"equal_tee", equal_tee},                     {"slotted_tube", slotted_tube},
             {"bullet", bullet},                           {"tiny_part", tiny_part},
-            {"far_large_part", far_large_part},           {"drafted_box", drafted_box}};
+            {"far_large_part", far_large_part},           {"drafted_box", drafted_box},
+            {"wavy_block", wavy_block},                   {"boss_on_wavy_block", boss_on_wavy_block},
+            {"open_box_shell", open_box_shell},           {"two_solids", two_solids},
+            {"sewn_patchwork", sewn_patchwork}};
 }
 
 bool write_step(const TopoDS_Shape& s, const std::string& path) {
@@ -587,5 +666,9 @@ int main(int argc, char** argv) {
     }
     Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
     for (const Part& part : parts()) write_part(part, argv[1]);
+    // The turned shaft once more as STEP in inches (lengths divided by 25.4 in the file).
+    Interface_Static::SetCVal("write.step.unit", "INCH");
+    const std::string inch = std::string(argv[1]) + "/turned_shaft_inch.stp";
+    std::printf("%-24s %s\n", "turned_shaft_inch", write_step(turned_shaft(), inch) ? "written" : "WRITE FAILED");
     return 0;
 }
