@@ -37,6 +37,8 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerat
         topology.triangles = position_triangles(mesh, group);
         const std::vector<TriangleSide> open = unpaired_sides(mesh, topology.triangles, threads);
         if (open.empty()) break;
+        std::vector<std::uint8_t> open_corners(mesh.triangles.size(), 0);  // bit k: side from corner k is open
+        for (const TriangleSide& s : open) open_corners[s.triangle] |= std::uint8_t(1u << s.corner);
         const auto side_ends = [&](const TriangleSide& s) {
             const auto& t = topology.triangles[s.triangle];
             return std::array<std::int32_t, 2>{t[s.corner], t[(s.corner + 1) % 3]};
@@ -75,6 +77,11 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerat
             const Eigen::Vector3d ab = b - a;
             const double len2 = ab.squaredNorm();
             if (!(len2 > 0.0)) continue;
+            const auto& corners = mesh.triangles[side.triangle];
+            const Eigen::Vector3d apex = mesh.positions[corners[(side.corner + 2) % 3]];
+            const Eigen::Vector3d normal = ab.cross(apex - a);
+            // Whether the triangle's side from corner k is paired (inside the mesh).
+            const auto paired = [&](int k) { return !(open_corners[side.triangle] & (1u << (k % 3))); };
             const GridCell lo = key(a.cwiseMin(b) - Eigen::Vector3d::Constant(distance));
             const GridCell hi = key(a.cwiseMax(b) + Eigen::Vector3d::Constant(distance));
             if ((hi.x - lo.x + 1) * (hi.y - lo.y + 1) * (hi.z - lo.z + 1) > 4096) continue;
@@ -97,6 +104,14 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerat
                             // the other face's edge closes the crack.
                             if (!((p - a).norm() > kMinSplitShare * distance) ||
                                 !((p - b).norm() > kMinSplitShare * distance))
+                                continue;
+                            // A vertex beyond the triangle's other side (apex, a) or (b, apex)
+                            // where that side is paired lies across the mesh's own interior,
+                            // not across a crack: the other side of a strip thinner than
+                            // `distance` (bug25837_S.igs at 0.01: the split folded 23 triangles
+                            // back, area 1.018x).
+                            if ((!((p - a).cross(apex - a).dot(normal) > 0.0) && paired(side.corner + 2)) ||
+                                (!((b - p).cross(apex - p).dot(normal) > 0.0) && paired(side.corner + 1)))
                                 continue;
                             on_edge.emplace_back(t, v);
                         }

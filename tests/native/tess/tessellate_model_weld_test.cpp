@@ -14,6 +14,9 @@
 #include <set>
 #include <tuple>
 
+#include "geom/analytic_curves.h"
+#include "geom/analytic_surfaces.h"
+#include "mesh/mesh.h"
 #include "geom/model.h"
 #include "io/read_model.h"
 #include "geom/flatten_instances.h"
@@ -144,6 +147,53 @@ TEST(TessellateModelWeld, PartsThatTouchAreJoinedEachOnItsOwn) {
     EXPECT_EQ(both.open_edges, 2 * alone.open_edges);
     EXPECT_EQ(both.mesh.triangle_count(), 2 * alone.mesh.triangle_count());
     EXPECT_NEAR(mesh::surface_area(both.mesh), 2.0, 1e-12);
+}
+
+// A lone plane face, a ribbon along an arc of radius 50 (140 degrees) only 0.15 wide,
+// meshed at T = 2: its two sides' polylines lie within the join's reach of each other
+// across the face (bug25837_S.igs at 0.01 of its diagonal). The join must not split
+// one side's open edges at the other side's points: that folded triangles back over
+// the ribbon (23 there, area 1.018x). Every triangle faces +z, and the mesh's area
+// is the ribbon's less what the chords cut off (each side within T / 2 of its arc).
+TEST(TessellateModelWeld, RibbonThinnerThanTheJoinsReachDoesNotFold) {
+    const double R = 50, w = 0.15, sweep = 140 * M_PI / 180, T = 2;
+    geom::Face face;
+    face.surface = geom::plane_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), -60,
+                                     60, -60, 60);
+    face.surface_kind = "plane";
+    const auto arc = [&](double r, bool forward) {
+        geom::NurbsCurve2d c = geom::to_2d(geom::circular_arc(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(),
+                                                              Eigen::Vector3d::UnitY(), r, 0.0, sweep));
+        return forward ? c : c.reversed();
+    };
+    const Eigen::Vector2d d(std::cos(sweep), std::sin(sweep));
+    geom::Loop loop;
+    loop.outer = true;
+    loop.coedges.push_back({arc(R + w, true), -1, false});
+    loop.coedges.push_back({geom::line_segment(Eigen::Vector2d((R + w) * d), Eigen::Vector2d(R * d)), -1, false});
+    loop.coedges.push_back({arc(R, false), -1, false});
+    loop.coedges.push_back({geom::line_segment(Eigen::Vector2d(R, 0), Eigen::Vector2d(R + w, 0)), -1, false});
+    // Each coedge on an edge of its own (as the file's shared edges), so the two sides
+    // are not sewn into one (sew_free_coedges joins free coedges within 0.2 T).
+    geom::Model model;
+    for (geom::Coedge& coedge : loop.coedges) {
+        coedge.edge = static_cast<int>(model.edges.size());
+        model.edges.push_back({});
+    }
+    face.loops.push_back(loop);
+    model.faces.push_back(face);
+    TessellationOptions options;
+    options.tolerance = T;
+    options.threads = 1;
+    const TessellationResult r = tessellate_model(model, options);
+    ASSERT_TRUE(r.failed_faces.empty()) << r.failed_faces[0].reason;
+    int backward = 0;
+    for (const auto& t : r.mesh.triangles)
+        backward += (r.mesh.positions[t[1]] - r.mesh.positions[t[0]]).cross(r.mesh.positions[t[2]] - r.mesh.positions[t[0]]).z() < 0;
+    EXPECT_EQ(backward, 0);
+    const double exact = 0.5 * sweep * ((R + w) * (R + w) - R * R);
+    EXPECT_LE(mesh::surface_area(r.mesh), exact * (1 + 1e-9));
+    EXPECT_GE(mesh::surface_area(r.mesh), exact - 0.5 * T * sweep * (2 * R + w));
 }
 
 TEST(TessellateModelWeld, ThreadCountDoesNotChangeTheMesh) {

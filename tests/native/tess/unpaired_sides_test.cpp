@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh/mesh.h"
 #include "mesh/open_edges.h"
 #include "tess/close_t_junctions.h"
 #include "tess/snap_boundary_vertices.h"
@@ -47,6 +48,23 @@ TEST(UnpairedSides, ClosingTheTJunctionPairsEverySideOfTheChord) {
     mesh::Mesh far = sliver_against_chord();
     EXPECT_EQ(close_t_junctions(far, 0.005), 0u);
     EXPECT_EQ(count_position_open_edges(far), 7u);
+}
+
+// A lone face: a strip 10 long and 0.12 wide meshed as a zigzag between its sides
+// y = 0 (A, B) and y = 0.12 (C, D). D lies within 0.2 of the open side A B and
+// projects between its ends, but beyond the triangle's side B C, which the strip's
+// next triangle shares: across the face's own interior, not across a crack. Split
+// there, (D, B, C) would fold back (bug25837_S.igs at 0.01 of its diagonal: 23
+// backward triangles, area 1.018x). No split; the mesh stays as it was.
+TEST(UnpairedSides, VertexAcrossAStripThinnerThanTheDistanceIsNoTJunction) {
+    mesh::Mesh m;
+    m.positions = {{0, 0, 0}, {10, 0, 0}, {3, 0.12, 0}, {7, 0.12, 0}, {10, 0.12, 0}, {0, 0.12, 0}};
+    m.triangles = {{0, 1, 2}, {1, 4, 3}, {1, 3, 2}, {0, 2, 5}};
+    m.face_ids = {0, 0, 0, 0};
+    ASSERT_NEAR(mesh::surface_area(m), 1.2, 1e-12);
+    EXPECT_EQ(close_t_junctions(m, 0.2), 0u);
+    EXPECT_EQ(m.triangle_count(), 4u);
+    EXPECT_NEAR(mesh::surface_area(m), 1.2, 1e-12);
 }
 
 TEST(UnpairedSides, FacesOfOppositeOrientationStillPair) {
