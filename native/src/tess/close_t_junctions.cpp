@@ -23,6 +23,9 @@ constexpr int kMaxPasses = 4;
 // split in (they are that end up to rounding).
 constexpr double kMinSplitShare = 1e-6;
 
+// position_face before any triangle names the position.
+constexpr std::int32_t kNoFace = -2;
+
 }  // namespace
 
 std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerate, int threads) {
@@ -39,6 +42,13 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerat
         if (open.empty()) break;
         std::vector<std::uint8_t> open_corners(mesh.triangles.size(), 0);  // bit k: side from corner k is open
         for (const TriangleSide& s : open) open_corners[s.triangle] |= std::uint8_t(1u << s.corner);
+        // The face of each position's vertices, or -1 where faces meet (or none has ids).
+        std::vector<std::int32_t> position_face(mesh.positions.size(), kNoFace);
+        for (std::size_t t = 0; t < mesh.triangles.size() && mesh.has_face_ids(); ++t)
+            for (std::int32_t k : mesh.triangles[t]) {
+                std::int32_t& f = position_face[group[k]];
+                f = f == kNoFace || f == mesh.face_ids[t] ? mesh.face_ids[t] : -1;
+            }
         const auto side_ends = [&](const TriangleSide& s) {
             const auto& t = topology.triangles[s.triangle];
             return std::array<std::int32_t, 2>{t[s.corner], t[(s.corner + 1) % 3]};
@@ -82,6 +92,8 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerat
             const Eigen::Vector3d normal = ab.cross(apex - a);
             // Whether the triangle's side from corner k is paired (inside the mesh).
             const auto paired = [&](int k) { return !(open_corners[side.triangle] & (1u << (k % 3))); };
+            const bool has_face = mesh.has_face_ids();
+            const std::int32_t own = has_face ? mesh.face_ids[side.triangle] : kNoFace;
             const GridCell lo = key(a.cwiseMin(b) - Eigen::Vector3d::Constant(distance));
             const GridCell hi = key(a.cwiseMax(b) + Eigen::Vector3d::Constant(distance));
             if ((hi.x - lo.x + 1) * (hi.y - lo.y + 1) * (hi.z - lo.z + 1) > 4096) continue;
@@ -105,13 +117,16 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerat
                             if (!((p - a).norm() > kMinSplitShare * distance) ||
                                 !((p - b).norm() > kMinSplitShare * distance))
                                 continue;
-                            // A vertex beyond the triangle's other side (apex, a) or (b, apex)
-                            // where that side is paired lies across the mesh's own interior,
-                            // not across a crack: the other side of a strip thinner than
-                            // `distance` (bug25837_S.igs at 0.01: the split folded 23 triangles
-                            // back, area 1.018x).
-                            if ((!((p - a).cross(apex - a).dot(normal) > 0.0) && paired(side.corner + 2)) ||
-                                (!((b - p).cross(apex - p).dot(normal) > 0.0) && paired(side.corner + 1)))
+                            // A vertex of the triangle's own face (no other face there) beyond
+                            // its other side (apex, a) or (b, apex), where that side is paired,
+                            // lies across the face's own interior, not across a crack: the other
+                            // side of a strip thinner than `distance` (bug25837_S.igs at 0.01:
+                            // the split folded 23 triangles back, area 1.018x). Another face's
+                            // vertex there is a T-junction over a sliver (OCC131-3.igs) and is
+                            // split in.
+                            if (has_face && position_face[v] == own &&
+                                ((!((p - a).cross(apex - a).dot(normal) > 0.0) && paired(side.corner + 2)) ||
+                                 (!((b - p).cross(apex - p).dot(normal) > 0.0) && paired(side.corner + 1))))
                                 continue;
                             on_edge.emplace_back(t, v);
                         }

@@ -143,6 +143,27 @@ double trace_gap(const geom::Model& model, const Trace& on, std::vector<Eigen::V
     return share_edge_points(face.surface, coedge, points).max_gap;
 }
 
+// Two coedges of one face pair only as its seam: their (u,v) ends half a domain or more
+// apart in u or in v (a closed surface's two sides of one curve). Two sides of a face
+// narrower than the distance are different curves: sewn, they became one polyline and
+// the face's mesh collapsed to two triangles, 44 T from the surface (a ribbon 0.15 wide
+// at T = 2), which the face's own check could not see.
+bool one_face_but_no_seam(const geom::Model& model, const Trace& a, const Trace& b, bool same_direction) {
+    if (a.face != b.face) return false;
+    const geom::Face& face = model.faces[a.face];
+    const auto end = [&](const Trace& t, bool last) {
+        const geom::NurbsCurve2d& c = face.loops[t.loop].coedges[t.coedge].curve;
+        return c.evaluate(last ? c.domain().second : c.domain().first);
+    };
+    const auto [u0, u1] = face.surface.domain_u();
+    const auto [v0, v1] = face.surface.domain_v();
+    for (bool last : {false, true}) {
+        const Eigen::Vector2d d = (end(a, last) - end(b, same_direction ? last : !last)).cwiseAbs();
+        if (!(d.x() >= 0.5 * (u1 - u0) || d.y() >= 0.5 * (v1 - v0))) return true;
+    }
+    return false;
+}
+
 // The pair's gap both ways, or +inf when the traces do not run along each other.
 double pair_gap(const geom::Model& model, const Trace& a, const Trace& b, bool same_direction, double distance) {
     if (std::abs(a.length - b.length) > 0.1 * std::max(a.length, b.length) + 2.0 * distance) return INFINITY;
@@ -185,6 +206,7 @@ std::vector<Candidate> candidates(const geom::Model& model, const std::vector<Tr
             const bool same = close(a.points.front(), b.points.front()) && close(a.points.back(), b.points.back());
             if (!opposite && !same) continue;
             const bool same_direction = opposite && same ? runs_along(model, a, b) : same;
+            if (one_face_but_no_seam(model, a, b, same_direction)) continue;
             const double gap = pair_gap(model, a, b, same_direction, distance);
             if (std::isfinite(gap)) found.push_back({i, j, same_direction, gap});
         }

@@ -149,51 +149,79 @@ TEST(TessellateModelWeld, PartsThatTouchAreJoinedEachOnItsOwn) {
     EXPECT_NEAR(mesh::surface_area(both.mesh), 2.0, 1e-12);
 }
 
-// A lone plane face, a ribbon along an arc of radius 50 (140 degrees) only 0.15 wide,
-// meshed at T = 2: its two sides' polylines lie within the join's reach of each other
-// across the face (bug25837_S.igs at 0.01 of its diagonal). The join must not split
-// one side's open edges at the other side's points: that folded triangles back over
-// the ribbon (23 there, area 1.018x). Every triangle faces +z, and the mesh's area
-// is the ribbon's less what the chords cut off (each side within T / 2 of its arc).
-TEST(TessellateModelWeld, RibbonThinnerThanTheJoinsReachDoesNotFold) {
-    const double R = 50, w = 0.15, sweep = 140 * M_PI / 180, T = 2;
+// A lone plane face, a ribbon along an arc of radius 50 (140 degrees) only 0.15 wide;
+// each coedge on an edge of its own (as a file's shared edges) unless `free_coedges`.
+constexpr double kRibbonR = 50, kRibbonW = 0.15, kRibbonSweep = 140 * M_PI / 180;
+geom::Model ribbon(bool free_coedges) {
     geom::Face face;
     face.surface = geom::plane_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), -60,
                                      60, -60, 60);
     face.surface_kind = "plane";
     const auto arc = [&](double r, bool forward) {
         geom::NurbsCurve2d c = geom::to_2d(geom::circular_arc(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(),
-                                                              Eigen::Vector3d::UnitY(), r, 0.0, sweep));
+                                                              Eigen::Vector3d::UnitY(), r, 0.0, kRibbonSweep));
         return forward ? c : c.reversed();
     };
-    const Eigen::Vector2d d(std::cos(sweep), std::sin(sweep));
+    const double R = kRibbonR, w = kRibbonW;
+    const Eigen::Vector2d d(std::cos(kRibbonSweep), std::sin(kRibbonSweep));
     geom::Loop loop;
     loop.outer = true;
     loop.coedges.push_back({arc(R + w, true), -1, false});
     loop.coedges.push_back({geom::line_segment(Eigen::Vector2d((R + w) * d), Eigen::Vector2d(R * d)), -1, false});
     loop.coedges.push_back({arc(R, false), -1, false});
     loop.coedges.push_back({geom::line_segment(Eigen::Vector2d(R, 0), Eigen::Vector2d(R + w, 0)), -1, false});
-    // Each coedge on an edge of its own (as the file's shared edges), so the two sides
-    // are not sewn into one (sew_free_coedges joins free coedges within 0.2 T).
     geom::Model model;
     for (geom::Coedge& coedge : loop.coedges) {
+        if (free_coedges) break;
         coedge.edge = static_cast<int>(model.edges.size());
         model.edges.push_back({});
     }
     face.loops.push_back(loop);
     model.faces.push_back(face);
+    return model;
+}
+
+TessellationResult mesh_ribbon(const geom::Model& model, double T) {
     TessellationOptions options;
     options.tolerance = T;
     options.threads = 1;
-    const TessellationResult r = tessellate_model(model, options);
+    return tessellate_model(model, options);
+}
+
+// At T = 2 the ribbon's two sides lie within the join's reach (0.1 T) of each other
+// across the face (bug25837_S.igs at 0.01 of its diagonal). The join must not split
+// one side's open edges at the other side's points: that folded triangles back over
+// the ribbon (23 there, area 1.018x; here 36, area 1.77x). Every triangle faces +z,
+// and the area is the ribbon's less what the chords cut off (each within T / 2).
+TEST(TessellateModelWeld, RibbonThinnerThanTheJoinsReachDoesNotFold) {
+    const double T = 2;
+    const TessellationResult r = mesh_ribbon(ribbon(false), T);
     ASSERT_TRUE(r.failed_faces.empty()) << r.failed_faces[0].reason;
     int backward = 0;
     for (const auto& t : r.mesh.triangles)
         backward += (r.mesh.positions[t[1]] - r.mesh.positions[t[0]]).cross(r.mesh.positions[t[2]] - r.mesh.positions[t[0]]).z() < 0;
     EXPECT_EQ(backward, 0);
-    const double exact = 0.5 * sweep * ((R + w) * (R + w) - R * R);
+    const double R = kRibbonR, w = kRibbonW, exact = 0.5 * kRibbonSweep * ((R + w) * (R + w) - R * R);
     EXPECT_LE(mesh::surface_area(r.mesh), exact * (1 + 1e-9));
-    EXPECT_GE(mesh::surface_area(r.mesh), exact - 0.5 * T * sweep * (2 * R + w));
+    EXPECT_GE(mesh::surface_area(r.mesh), exact - 0.5 * T * kRibbonSweep * (2 * R + w));
+}
+
+// The same ribbon with free coedges (faces-mode IGES): its two sides are different
+// curves, not a seam, though within the sewing's reach (0.2 T). Sewn into one
+// polyline they collapsed the face to 2 triangles: the arc 88 (44 T) from the mesh,
+// area 0.12x, and the face passed its own check (a ribbon narrower than its lobe test
+// looks across). Unsewn, the mesh is within T of the surface both ways (measured
+// independently).
+TEST(TessellateModelWeld, RibbonsTwoSidesAreNotSewnIntoOne) {
+    const double T = 2;
+    const geom::Model model = ribbon(true);
+    const TessellationResult r = mesh_ribbon(model, T);
+    ASSERT_TRUE(r.failed_faces.empty()) << r.failed_faces[0].reason;
+    const DeviationReport d = measure_deviation(model, r.mesh);
+    EXPECT_LE(d.mesh_to_surface.max, T);
+    EXPECT_LE(d.surface_to_mesh.max, T);
+    EXPECT_GT(d.area_ratio, 0.9);
+    EXPECT_LE(d.area_ratio, 1.0 + 1e-9);
 }
 
 TEST(TessellateModelWeld, ThreadCountDoesNotChangeTheMesh) {
