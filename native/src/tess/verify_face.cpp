@@ -60,6 +60,11 @@ constexpr double kCurvatureCap = 1.0;
 // error, below any width worth meshing (a strip this narrow has less area than
 // L·T of the area bound).
 constexpr double kAcrossShare = 0.25;
+// ... and at this share too: a face narrower than kAcrossShare T has region on neither
+// side of its curves at that distance, so its points would all pass as lobes and any
+// mesh of it (a ribbon 0.15 wide at T = 2 sewn shut into 2 triangles, 44 T off) pass
+// the boundary test. Twice the widest sliver repair_trim_loop drops.
+constexpr double kNarrowAcrossShare = 0.02;
 // Curve points farther than this share of the boundary bound from the mesh boundary
 // are tested for bounding no area (a lobe's points nearer than the bound would
 // otherwise count, and loop_gap creep up to the bound along its base).
@@ -316,8 +321,9 @@ FaceVerification verify_face(const geom::Face& face, FaceReference& ref, const m
             for (const CurveSample& x : samples[l][c]) {
                 TriangleBvh::Hit hit = boundary_tree.closest(x.xyz, kProbeShare * out.boundary_bound);
                 if (hit.triangle < 0) {
-                    if (!bounds_region(fine_region(), S, face.loops[l].coedges[c].curve, x.t,
-                                       kAcrossShare * tolerance)) {
+                    const geom::NurbsCurve2d& curve = face.loops[l].coedges[c].curve;
+                    if (!bounds_region(fine_region(), S, curve, x.t, kAcrossShare * tolerance) &&
+                        !bounds_region(fine_region(), S, curve, x.t, kNarrowAcrossShare * tolerance)) {
                         ++out.lobe_samples;
                         continue;
                     }

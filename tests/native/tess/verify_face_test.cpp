@@ -289,6 +289,41 @@ TEST(VerifyFace, StraightTrimAcrossManySurfaceSpansIsSampledPerSurfaceSpan) {
     EXPECT_EQ(r.faces_meshed, 1);
 }
 
+// A plane face, a ribbon along an arc of radius 50 (140 degrees) 0.15 wide, meshed
+// at T = 2 as the quad of its four corners (what a face sewn shut became): the arcs
+// run up to 33 from that quad. The ribbon is narrower than the lobe test's 0.25 T, so
+// its curve points all passed as lobes and the face passed; now it fails on its loop.
+TEST(VerifyFace, RibbonNarrowerThanTheLobeTestIsStillJudged) {
+    const double R = 50, w = 0.15, sweep = 140 * M_PI / 180, T = 2;
+    geom::Face face;
+    face.surface = geom::plane_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), -60,
+                                     60, -60, 60);
+    const auto arc = [&](double r) {
+        return geom::to_2d(geom::circular_arc(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(),
+                                              Eigen::Vector3d::UnitY(), r, 0.0, sweep));
+    };
+    const Eigen::Vector2d d(std::cos(sweep), std::sin(sweep)), a(R, 0), b(R + w, 0), c((R + w) * d), e(R * d);
+    geom::Loop loop;
+    loop.outer = true;
+    loop.coedges = {{arc(R + w), -1, false}, {geom::line_segment(c, e), -1, false}, {arc(R).reversed(), -1, false},
+                    {geom::line_segment(a, b), -1, false}};
+    face.loops.push_back(loop);
+    TrimPolygon quad;
+    quad.outer = true;
+    for (const Eigen::Vector2d& p : {a, b, c, e}) quad.points.push_back(test::on_surface(face.surface, p.x(), p.y()));
+    const mesh::Mesh m = tessellate_face(face, {quad}, at(T), 0);
+    ASSERT_EQ(m.triangle_count(), 2u);
+    const FaceVerification v = verify_face(face, m, {quad}, T, 0);
+    EXPECT_FALSE(v.passed());
+    EXPECT_EQ(v.defect, FaceDefect::kLoopGap) << v.reason;
+    // The arcs' middles lie R (1 - cos 70 deg) = 32.9 from the chord the quad runs along.
+    EXPECT_GT(v.loop_gap, 30.0);
+    // Meshed along its arcs it passes.
+    const std::vector<TrimPolygon> polygons = polygons_of(face, T);
+    const FaceVerification good = verify_face(face, tessellate_face(face, polygons, at(T), 0), polygons, T, 0);
+    EXPECT_TRUE(good.passed()) << good.reason;
+}
+
 TEST(VerifyFace, RejectsANonPositiveTolerance) {
     const geom::Face face = plate();
     const std::vector<TrimPolygon> polygons = polygons_of(face, 0.01);
