@@ -46,6 +46,10 @@ constexpr double kPcurveRefitShare = 1e-7;
 // again (the better result is kept); above kLoopGapMax it is skipped.
 constexpr double kLoopGapRetry = 1e-6;
 constexpr double kLoopGapMax = 1e-4;
+// A joint closed in 3D counts as closed only while its (u,v) gap is below this share
+// of the domain: the loop is bridged by a straight (u,v) segment, which across a
+// period jump (0 to 2 pi on a closed surface, 3D gap 0) would cut the face in two.
+constexpr double kUvGapClosedIn3d = 1e-2;
 
 // The (u, v) box of the face's p-curves in OCCT's parameters (tight: AddOptimal).
 Eigen::AlignedBox2d trim_range(const TopoDS_Face& face) {
@@ -152,8 +156,8 @@ geom::Face convert_face(const TopoDS_Face& located, const TopTools_IndexedMapOfS
 // gap is the smaller of its (u,v) gap relative to the domain's size and its 3D gap
 // relative to the face's size (the box of its coedges' ends and middles): a joint closed in 3D
 // may be open in (u,v) where the surface hardly moves along u (Bottom.brep's blend
-// corner: 0.0177 in u, 0.001 in 3D on a face 19 across), and one closed in (u,v) may
-// be open in 3D by the file's edge tolerance.
+// corner: 0.0177 in u, 0.001 in 3D on a face 19 across; up to kUvGapClosedIn3d), and
+// one closed in (u,v) may be open in 3D by the file's edge tolerance.
 double loop_gap(const geom::Face& face) {
     const auto [u0, u1] = face.surface.domain_u();
     const auto [v0, v1] = face.surface.domain_v();
@@ -175,8 +179,10 @@ double loop_gap(const geom::Face& face) {
         }
     const double domain = std::max(u1 - u0, v1 - v0), size = box.isEmpty() ? 0.0 : box.diagonal().norm();
     double gap = 0;
-    for (const auto& [uv, xyz] : joints)
-        gap = std::max(gap, std::min(uv / domain, size > 0 ? xyz / size : uv / domain));
+    for (const auto& [uv, xyz] : joints) {
+        const double in_uv = uv / domain, in_3d = size > 0 && in_uv <= kUvGapClosedIn3d ? xyz / size : in_uv;
+        gap = std::max(gap, std::min(in_uv, in_3d));
+    }
     return gap;
 }
 
