@@ -6,6 +6,7 @@
 // beyond the files in ../shared/data/cad. Run by hand, then bench/step_check_all.py
 // --files on the output measures each file against OCCT's own reading.
 // Usage: occt_make_corpus OUT_DIR     (prints one line per file written)
+//        occt_make_corpus OUT_DIR --from-brep FILE.brep...   (each as STEP and both IGES modes)
 // (26 solids since 2026-12-02: round 2 added poles inside holes, a hole where a torus's
 // seams meet, an open revolution, a B-spline plate, filleted hole rims, offset surfaces,
 // an ellipsoid of B-spline faces and a frustum with a hole on its seam; round 3 a coil
@@ -68,6 +69,7 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
+#include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -659,9 +661,42 @@ void write_part(const Part& part, const std::string& dir) {
 
 }  // namespace
 
+// Each .brep file given, read by BRepTools::Read, written again as STEP and as IGES in
+// both modes (real parts through the IGES and STEP writers: OCCT's own sample files).
+int convert_breps(const std::string& dir, int count, char** paths) {
+    int failed = 0;
+    for (int k = 0; k < count; ++k) {
+        TopoDS_Shape shape;
+        BRep_Builder builder;
+        const std::string path = paths[k];
+        if (path.size() > 4 && path.substr(path.size() - 4) == ".stp") {  // a STEP file back to .brep
+            STEPControl_Reader reader;
+            if (reader.ReadFile(path.c_str()) == IFSelect_RetDone && reader.TransferRoots() > 0)
+                BRepTools::Write(reader.OneShape(), (dir + "/" + path.substr(path.find_last_of('/') + 1) + ".brep").c_str());
+            continue;
+        }
+        if (!BRepTools::Read(shape, path.c_str(), builder) || shape.IsNull()) {
+            std::printf("%-32s not read\n", path.c_str());
+            ++failed;
+            continue;
+        }
+        std::string stem = path.substr(path.find_last_of('/') + 1);
+        stem = dir + "/" + stem.substr(0, stem.find_last_of('.'));
+        const bool ok = write_step(shape, stem + ".stp") && write_iges(shape, stem + "_brep.igs", true) &&
+                        write_iges(shape, stem + "_faces.igs", false);
+        std::printf("%-32s faces %4d  %s\n", path.c_str(), faces_of(shape), ok ? "written" : "WRITE FAILED");
+        failed += !ok;
+    }
+    return failed > 0;
+}
+
 int main(int argc, char** argv) {
+    if (argc >= 4 && std::string(argv[2]) == "--from-brep") {
+        Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+        return convert_breps(argv[1], argc - 3, argv + 3);
+    }
     if (argc != 2) {
-        std::fprintf(stderr, "usage: occt_make_corpus OUT_DIR\n");
+        std::fprintf(stderr, "usage: occt_make_corpus OUT_DIR | occt_make_corpus OUT_DIR --from-brep FILE.brep...\n");
         return 2;
     }
     Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
