@@ -75,12 +75,27 @@ NurbsSurface continue_u(const NurbsSurface& S, double to, bool at_end) {
                         R.is_rational() ? std::move(w) : std::vector<double>{});
 }
 
+// Whether both ends of U carry degree + 1 equal knots (the end spans' poles are then
+// the last degree + 1 poles, which continue_u takes for the end Bézier piece).
+bool clamped(const std::vector<double>& U, int p) {
+    return multiplicity(U, U.front()) >= p + 1 && multiplicity(U, U.back()) >= p + 1;
+}
+
 }  // namespace
 
 NurbsSurface extrapolated_surface(const NurbsSurface& S, double u0, double u1, double v0, double v1) {
     if (!std::isfinite(u0) || !std::isfinite(u1) || !std::isfinite(v0) || !std::isfinite(v1))
         throw InvalidInput("extrapolated_surface: bounds must be finite");
+    // An unclamped knot vector (uniform knots past the domain, OCCT's non-periodic
+    // B-splines through its STEP writer) is clamped to the domain first: its last
+    // poles are not its end span's (shell1.brep via STEP: the face became the whole
+    // control net's patch, 10x its area, 293 T off).
     NurbsSurface R = S;
+    if (!clamped(S.knots_u(), S.degree_u()) || !clamped(S.knots_v(), S.degree_v())) {
+        const auto [du0, du1] = S.domain_u();
+        const auto [dv0, dv1] = S.domain_v();
+        R = S.sub_surface(du0, du1, dv0, dv1);
+    }
     if (u1 > R.domain_u().second) R = continue_u(R, u1, true);
     if (u0 < R.domain_u().first) R = continue_u(R, u0, false);
     if (v1 > R.domain_v().second) R = continue_u(R.swapped_uv(), v1, true).swapped_uv();

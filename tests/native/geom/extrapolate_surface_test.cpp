@@ -72,6 +72,28 @@ TEST(ExtrapolateSurface, RationalQuarterCylinderStaysOnTheCylinder) {
     EXPECT_LT(E.evaluate(u0 - 0.1, 0).y(), 0.0);
 }
 
+// A bicubic with uniform unclamped knots 0..7 each way (domain [3, 4]^2), as OCCT's STEP
+// round trip gives shell1.brep's faces, widened by 1e-3 at each end: inside its domain
+// it is the same surface (before, the last four poles were taken for the end span and
+// the patch became the whole control net's, 1.5 - 1.7 off), and just past the domain the
+// surface stays next to its edge.
+TEST(ExtrapolateSurface, UnclampedKnotsAreClampedToTheDomainFirst) {
+    std::vector<Eigen::Vector3d> P;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) P.emplace_back(i + 0.3 * (j % 2), j - 0.2 * (i % 2), (i * j) % 3 - 1.0);
+    const std::vector<double> U{0, 1, 2, 3, 4, 5, 6, 7};
+    const NurbsSurface S(3, 3, U, U, 4, 4, P);
+    ASSERT_DOUBLE_EQ(S.domain_u().first, 3.0);
+    const NurbsSurface E = extrapolated_surface(S, 3 - 1e-3, 4 + 1e-3, 3 - 1e-3, 4 + 1e-3);
+    for (double u = 3.0; u <= 4.0; u += 0.125)
+        for (double v = 3.0; v <= 4.0; v += 0.125) EXPECT_LT((E.evaluate(u, v) - S.evaluate(u, v)).norm(), 1e-12);
+    // Past the domain: a small step from the edge moves the point by about the step times
+    // the surface's speed there, not to a far pole.
+    const NurbsSurface C = S.sub_surface(3, 4, 3, 4);
+    EXPECT_LT((E.evaluate(3 - 1e-3, 3.5) - C.evaluate(3, 3.5)).norm(), 1e-2);
+    EXPECT_LT((E.evaluate(4 + 1e-3, 4 + 1e-3) - C.evaluate(4, 4)).norm(), 1e-2);
+}
+
 TEST(ExtrapolateSurface, InsideTheDomainIsTheSameSurfaceAndBadBoundsThrow) {
     const NurbsSurface S = polynomial_patch();
     const NurbsSurface E = extrapolated_surface(S, 0.5, 1.0, 0.2, 0.3);
