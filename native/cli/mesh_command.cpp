@@ -138,12 +138,12 @@ int run_mesh(const std::vector<std::string>& argv) {
                   << " more warnings from reading the file (trimkit info lists them)\n";
     // Edges farther from a face than the tolerance: the mesh is within the file's own
     // edge gap there, not within T; say so, however the output is asked for.
-    int off_face_edges = 0;
+    size_t off_face_edges = 0;
     for (const std::string& warning : result.warnings) {
         if (warning.find("(more than the tolerance") == std::string::npos) continue;
-        if (++off_face_edges <= static_cast<int>(kListedWarnings)) std::cerr << "trimkit: " << path << ": warning: " << warning << "\n";
+        if (++off_face_edges <= kListedWarnings) std::cerr << "trimkit: " << path << ": warning: " << warning << "\n";
     }
-    if (off_face_edges > static_cast<int>(kListedWarnings))
+    if (off_face_edges > kListedWarnings)
         std::cerr << "trimkit: " << path << ": warning: " << off_face_edges - kListedWarnings
                   << " more edges lie farther than the tolerance from a face (--json lists them)\n";
     for (const tess::FailedFace& failed : result.failed_faces) {

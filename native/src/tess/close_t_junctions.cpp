@@ -43,8 +43,9 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerat
         std::vector<std::uint8_t> open_corners(mesh.triangles.size(), 0);  // bit k: side from corner k is open
         for (const TriangleSide& s : open) open_corners[s.triangle] |= std::uint8_t(1u << s.corner);
         // The face of each position's vertices, or -1 where faces meet (or none has ids).
+        const bool has_face = mesh.has_face_ids();
         std::vector<std::int32_t> position_face(mesh.positions.size(), kNoFace);
-        for (std::size_t t = 0; t < mesh.triangles.size() && mesh.has_face_ids(); ++t)
+        for (std::size_t t = 0; t < mesh.triangles.size() && has_face; ++t)
             for (std::int32_t k : mesh.triangles[t]) {
                 std::int32_t& f = position_face[group[k]];
                 f = f == kNoFace || f == mesh.face_ids[t] ? mesh.face_ids[t] : -1;
@@ -92,7 +93,6 @@ std::size_t close_t_junctions(mesh::Mesh& mesh, double distance, bool* degenerat
             const Eigen::Vector3d normal = ab.cross(apex - a);
             // Whether the triangle's side from corner k is paired (inside the mesh).
             const auto paired = [&](int k) { return !(open_corners[side.triangle] & (1u << (k % 3))); };
-            const bool has_face = mesh.has_face_ids();
             const std::int32_t own = has_face ? mesh.face_ids[side.triangle] : kNoFace;
             const GridCell lo = key(a.cwiseMin(b) - Eigen::Vector3d::Constant(distance));
             const GridCell hi = key(a.cwiseMax(b) + Eigen::Vector3d::Constant(distance));

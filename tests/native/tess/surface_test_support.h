@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "geom/analytic_curves.h"
+#include "geom/analytic_surfaces.h"
 #include "geom/face.h"
 #include "geom/nurbs_surface.h"
 #include "mesh/mesh.h"
@@ -47,6 +49,29 @@ inline geom::NurbsSurface paraboloid(int spans = 1, bool flat = false, int multi
     for (int k = 1; k < spans; ++k)
         for (int m = 0; m < multiplicity; ++m) S = S.insert_knot_u(double(k) / spans).insert_knot_v(double(k) / spans);
     return S;
+}
+
+// The ribbon between arcs of radius R and R + w about the origin over [0, sweep], on
+// the plane z = 0 ((u,v) = (x,y) over [-60, 60]^2), as one outer loop of free coedges:
+// the outer arc, the end line at `sweep`, the inner arc back, the end line at 0.
+inline geom::Face ribbon_face(double R, double w, double sweep) {
+    geom::Face face;
+    face.surface = geom::plane_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), -60,
+                                     60, -60, 60);
+    face.surface_kind = "plane";
+    const auto arc = [&](double r) {
+        return geom::to_2d(geom::circular_arc(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(),
+                                              Eigen::Vector3d::UnitY(), r, 0.0, sweep));
+    };
+    const Eigen::Vector2d d(std::cos(sweep), std::sin(sweep));
+    geom::Loop loop;
+    loop.outer = true;
+    loop.coedges = {{arc(R + w), -1, false},
+                    {geom::line_segment(Eigen::Vector2d((R + w) * d), Eigen::Vector2d(R * d)), -1, false},
+                    {arc(R).reversed(), -1, false},
+                    {geom::line_segment(Eigen::Vector2d(R, 0), Eigen::Vector2d(R + w, 0)), -1, false}};
+    face.loops.push_back(loop);
+    return face;
 }
 
 inline PolylinePoint on_surface(const geom::NurbsSurface& S, double u, double v) {

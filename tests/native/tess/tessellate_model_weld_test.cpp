@@ -14,8 +14,6 @@
 #include <set>
 #include <tuple>
 
-#include "geom/analytic_curves.h"
-#include "geom/analytic_surfaces.h"
 #include "mesh/mesh.h"
 #include "geom/model.h"
 #include "io/read_model.h"
@@ -26,6 +24,7 @@
 #include "tess/measure_deviation.h"
 #include "tess/snap_boundary_vertices.h"
 #include "tess/tessellate_model.h"
+#include "tess/surface_test_support.h"
 #include "test_support.h"
 
 namespace trimkit::tess {
@@ -153,30 +152,13 @@ TEST(TessellateModelWeld, PartsThatTouchAreJoinedEachOnItsOwn) {
 // each coedge on an edge of its own (as a file's shared edges) unless `free_coedges`.
 constexpr double kRibbonR = 50, kRibbonW = 0.15, kRibbonSweep = 140 * M_PI / 180;
 geom::Model ribbon(bool free_coedges) {
-    geom::Face face;
-    face.surface = geom::plane_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), -60,
-                                     60, -60, 60);
-    face.surface_kind = "plane";
-    const auto arc = [&](double r, bool forward) {
-        geom::NurbsCurve2d c = geom::to_2d(geom::circular_arc(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(),
-                                                              Eigen::Vector3d::UnitY(), r, 0.0, kRibbonSweep));
-        return forward ? c : c.reversed();
-    };
-    const double R = kRibbonR, w = kRibbonW;
-    const Eigen::Vector2d d(std::cos(kRibbonSweep), std::sin(kRibbonSweep));
-    geom::Loop loop;
-    loop.outer = true;
-    loop.coedges.push_back({arc(R + w, true), -1, false});
-    loop.coedges.push_back({geom::line_segment(Eigen::Vector2d((R + w) * d), Eigen::Vector2d(R * d)), -1, false});
-    loop.coedges.push_back({arc(R, false), -1, false});
-    loop.coedges.push_back({geom::line_segment(Eigen::Vector2d(R, 0), Eigen::Vector2d(R + w, 0)), -1, false});
+    geom::Face face = test::ribbon_face(kRibbonR, kRibbonW, kRibbonSweep);
     geom::Model model;
-    for (geom::Coedge& coedge : loop.coedges) {
+    for (geom::Coedge& coedge : face.loops[0].coedges) {
         if (free_coedges) break;
         coedge.edge = static_cast<int>(model.edges.size());
         model.edges.push_back({});
     }
-    face.loops.push_back(loop);
     model.faces.push_back(face);
     return model;
 }

@@ -295,19 +295,8 @@ TEST(VerifyFace, StraightTrimAcrossManySurfaceSpansIsSampledPerSurfaceSpan) {
 // its curve points all passed as lobes and the face passed; now it fails on its loop.
 TEST(VerifyFace, RibbonNarrowerThanTheLobeTestIsStillJudged) {
     const double R = 50, w = 0.15, sweep = 140 * M_PI / 180, T = 2;
-    geom::Face face;
-    face.surface = geom::plane_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), -60,
-                                     60, -60, 60);
-    const auto arc = [&](double r) {
-        return geom::to_2d(geom::circular_arc(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(),
-                                              Eigen::Vector3d::UnitY(), r, 0.0, sweep));
-    };
+    const geom::Face face = test::ribbon_face(R, w, sweep);
     const Eigen::Vector2d d(std::cos(sweep), std::sin(sweep)), a(R, 0), b(R + w, 0), c((R + w) * d), e(R * d);
-    geom::Loop loop;
-    loop.outer = true;
-    loop.coedges = {{arc(R + w), -1, false}, {geom::line_segment(c, e), -1, false}, {arc(R).reversed(), -1, false},
-                    {geom::line_segment(a, b), -1, false}};
-    face.loops.push_back(loop);
     TrimPolygon quad;
     quad.outer = true;
     for (const Eigen::Vector2d& p : {a, b, c, e}) quad.points.push_back(test::on_surface(face.surface, p.x(), p.y()));
