@@ -46,12 +46,33 @@ SurfaceProjector::SurfaceProjector(const NurbsSurface& s) : s_(s) {
     Eigen::AlignedBox3d box;
     for (const auto& p : grid_) box.extend(p);
     size_ = std::max(box.diagonal().norm(), 1e-300);
+    mark_poles();
     const double tol = kSeamRelative * size_;
     closed_u_ = closed_v_ = true;
     for (int j = 0; j < nv_; ++j)
         if ((grid_[j] - grid_[(nu_ - 1) * nv_ + j]).norm() > tol) closed_u_ = false;
     for (int i = 0; i < nu_; ++i)
         if ((grid_[i * nv_] - grid_[i * nv_ + nv_ - 1]).norm() > tol) closed_v_ = false;
+}
+
+void SurfaceProjector::mark_poles() {
+    const double same = kSameFoot * size_;
+    at_pole_.assign(grid_.size(), 0);
+    for (int j = 0; j < nv_; ++j) {
+        bool one_point = true;
+        for (int i = 1; i < nu_ && one_point; ++i) one_point = (grid_[i * nv_ + j] - grid_[j]).norm() <= same;
+        for (int i = 0; i < nu_ && one_point; ++i) at_pole_[i * nv_ + j] = 1;
+    }
+    for (int i = 0; i < nu_; ++i) {
+        bool one_point = true;
+        for (int j = 1; j < nv_ && one_point; ++j) one_point = (grid_[i * nv_ + j] - grid_[i * nv_]).norm() <= same;
+        for (int j = 0; j < nv_ && one_point; ++j) at_pole_[i * nv_ + j] = 1;
+    }
+}
+
+Eigen::Vector2d SurfaceProjector::grid_uv(int k) const {
+    const int i = k / nv_, j = k % nv_;
+    return {u0_ + (u1_ - u0_) * i / (nu_ - 1), v0_ + (v1_ - v0_) * j / (nv_ - 1)};
 }
 
 Eigen::Vector2d SurfaceProjector::newton(const Eigen::Vector3d& x, Eigen::Vector2d uv) const {
@@ -83,19 +104,41 @@ Eigen::Vector2d SurfaceProjector::newton(const Eigen::Vector3d& x, Eigen::Vector
     return uv;
 }
 
+bool SurfaceProjector::grid_neighbours(int a, int b) const {
+    int di = std::abs(a / nv_ - b / nv_), dj = std::abs(a % nv_ - b % nv_);
+    if (closed_u_) di = std::min(di, nu_ - 1 - di);
+    if (closed_v_) dj = std::min(dj, nv_ - 1 - dj);
+    return di <= 1 && dj <= 1;
+}
+
 Eigen::Vector2d SurfaceProjector::invert(const Eigen::Vector3d& x, const Eigen::Vector2d* near) const {
     int best = 0;
     double bd = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < grid_.size(); ++k) {
         const double d = (grid_[k] - x).squaredNorm();
-        if (d < bd) {
-            bd = d;
-            best = static_cast<int>(k);
-        }
+        if (d < bd) bd = d, best = static_cast<int>(k);
     }
-    const int bi = best / nv_, bj = best % nv_;
-    Eigen::Vector2d uv = newton(x, {u0_ + (u1_ - u0_) * bi / (nu_ - 1), v0_ + (v1_ - v0_) * bj / (nv_ - 1)});
+    // Newton also starts from the nearest sample off a pole (at a pole the free
+    // parameter's derivative is zero: Newton cannot turn towards x's side) and
+    // from the nearest one beyond best's neighbours (a surface folded near
+    // itself, as a spindle torus by its axis: the nearest sample may lie in
+    // another basin than the foot). The nearest foot wins; ties keep the first.
+    int off_pole = -1, far = -1;
+    double bo = std::numeric_limits<double>::infinity(), bf = bo;
+    for (std::size_t k = 0; k < grid_.size(); ++k) {
+        if (at_pole_[k]) continue;
+        const double d = (grid_[k] - x).squaredNorm();
+        if (d < bo) bo = d, off_pole = static_cast<int>(k);
+        if (d < bf && !grid_neighbours(best, static_cast<int>(k))) bf = d, far = static_cast<int>(k);
+    }
+    Eigen::Vector2d uv = newton(x, grid_uv(best));
     double du = (s_.evaluate(uv.x(), uv.y()) - x).norm();
+    for (int start : {at_pole_[best] ? off_pole : -1, far}) {
+        if (start < 0) continue;
+        const Eigen::Vector2d alt = newton(x, grid_uv(start));
+        const double da = (s_.evaluate(alt.x(), alt.y()) - x).norm();
+        if (da < du - kSameFoot * size_) uv = alt, du = da;
+    }
     if (near) {
         Eigen::Vector2d alt = newton(x, *near);
         const double da = (s_.evaluate(alt.x(), alt.y()) - x).norm();

@@ -41,11 +41,15 @@ public:
 
 private:
     Eigen::Vector2d newton(const Eigen::Vector3d& x, Eigen::Vector2d uv) const;
+    void mark_poles();
+    Eigen::Vector2d grid_uv(int k) const;  // (u,v) of grid sample k
+    bool grid_neighbours(int a, int b) const;  // samples a and b at most one step apart
 
     const NurbsSurface& s_;
     double u0_, u1_, v0_, v1_;
     int nu_, nv_;
     std::vector<Eigen::Vector3d> grid_;  // nu_ x nv_ samples, v fastest
+    std::vector<char> at_pole_;          // grid samples on a row or column that is one point
     bool closed_u_ = false, closed_v_ = false;
     double size_ = 1;
 };

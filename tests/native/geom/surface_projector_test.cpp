@@ -62,5 +62,45 @@ TEST(SurfaceProjector, CurveStartingAHairOffThePoleTakesTheLongitudeOfItsOtherPo
     EXPECT_NEAR(uv.points()[0].y(), kPi / 2, 1e-6);
 }
 
+// A latitude circle 0.1355 rad below the pole (OCCT's Pump_TopCover.brep through
+// its IGES writer: a 15 mm hole around a sphere's pole, R = 110.7): the pole is
+// the nearest start of the coarse grid, and Newton from a pole, where u is free,
+// stayed there: every point went to the pole and the loop was bridged with a line.
+TEST(SurfaceProjector, PointsNearAPoleAreNotDrawnIntoIt) {
+    const double R = 110.7, latitude = kPi / 2 - 0.1355;
+    const NurbsSurface sphere = unit_sphere(R);
+    const SurfaceProjector projector(sphere);
+    // (The rational sphere's parameters are not its angles: compare points.)
+    for (double longitude : {0.3, 1.0, 2.5, 4.0, 5.9}) {
+        const Eigen::Vector3d x = on_sphere(R, longitude, latitude);
+        const Eigen::Vector2d uv = projector.invert(x);
+        EXPECT_NEAR((sphere.evaluate(uv.x(), uv.y()) - x).norm(), 0.0, 1e-9 * R) << "longitude " << longitude;
+    }
+    // A quarter of the circle: its image stays on the latitude circle's plane.
+    const Eigen::Vector3d centre(0, 0, R * std::sin(latitude));
+    const NurbsCurve3d arc = circular_arc(centre, Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                                          R * std::cos(latitude), 0.3, 0.3 + kPi / 2);
+    const NurbsCurve2d image = project_curve(projector, arc);
+    for (const Eigen::Vector2d& p : image.points())
+        EXPECT_NEAR(sphere.evaluate(p.x(), p.y()).z(), centre.z(), 1e-9 * R);
+}
+
+// A spindle torus (major radius 4.85 under the minor 54.5, OCCT's Bottom.brep):
+// by its axis, samples of every longitude lie close together, and Newton from
+// the nearest one stopped 2.35 away in another basin; the latitude circle the
+// face is trimmed by was projected onto the wrong circle and the loop bridged.
+TEST(SurfaceProjector, SpindleTorusByItsAxisFindsTheFootInTheRightBasin) {
+    const double R = 4.85, r = 54.5, phi = std::acos((13.66 - R) / r);
+    const NurbsSurface torus = torus_patch(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(),
+                                           R, r, 0, 2 * kPi, -kPi, kPi);
+    const SurfaceProjector projector(torus);
+    for (double theta = 0.05; theta < 2 * kPi; theta += 0.25) {
+        const Eigen::Vector3d x = (R + r * std::cos(phi)) * Eigen::Vector3d(std::cos(theta), std::sin(theta), 0) +
+                                  r * std::sin(phi) * Eigen::Vector3d::UnitZ();
+        const Eigen::Vector2d uv = projector.invert(x);
+        EXPECT_NEAR((torus.evaluate(uv.x(), uv.y()) - x).norm(), 0.0, 1e-9 * r) << "longitude " << theta;
+    }
+}
+
 }  // namespace
 }  // namespace trimkit::geom
