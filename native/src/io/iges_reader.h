@@ -55,6 +55,12 @@ struct IgesSurface {
     // sweep map periodically (θ ± 2π k onto v ± period k), so a trim curve across
     // the seam keeps its shape past the domain (io/iges_closed_surfaces.h).
     bool periodic_angle = false;
+    // u (after the affine map) is the angle of a circular-arc generatrix (120,
+    // 140) or directrix (122): the NURBS parameter is angle_u->to_nurbs(θ), exact
+    // only at the arc's knots. Parameter curves may give θ a whole turn off the
+    // arc's range (IGES 5.3 Sec. 4.3 starts arcs in [0, 2π); OCCT's writer keeps
+    // its own start, -0.09 say): θ is taken the turn nearest the arc.
+    std::optional<geom::ArcParameterMap> angle_u;
 };
 
 // The weights of a 126/128 entity as NurbsCurve/NurbsSurface take them: empty

@@ -30,6 +30,16 @@ constexpr double kHintMargin = 0.02;
 // close a surface with a visible gap).
 constexpr double kClosedRelative = 1e-7;
 constexpr double kClosedResolutionCap = 1e-4;
+// A 120's sweep within this (radians) past a whole turn is a whole turn: files print
+// angles with 10 digits (OCCT's writer: -6.283185307 to 2.17e-09).
+constexpr double kTurnRounding = 1e-7;
+
+// The terminate angle of a 120 whose sweep is a whole turn up to rounding, made exact.
+double whole_turn_snapped(double start, double terminate) {
+    const double excess = std::fabs(terminate - start) - 2 * kPi;
+    if (excess > 0 && excess <= kTurnRounding) return start + (terminate > start ? 2 * kPi : -2 * kPi);
+    return terminate;
+}
 
 NurbsSurface bspline_128(IgesParameterCursor& c) {
     const int K1 = c.integer("upper index K1"), K2 = c.integer("upper index K2");
@@ -181,6 +191,12 @@ IgesSurface IgesReader::surface(int de, const BoundaryHint* hint) {
         if (k.size() != 1) fail(de, std::string(what) + " is a composite curve of " + std::to_string(k.size()) + " pieces");
         return k.front();
     };
+    // The angle map of a 100 circular arc (built counter-clockwise on its angles,
+    // so its NURBS domain is [θ0, θ1]); none for other curves.
+    auto arc_angles = [&](int curve_de, const geom::NurbsCurve3d& g) -> std::optional<geom::ArcParameterMap> {
+        if (entry_of(curve_de).type != 100) return std::nullopt;
+        return geom::ArcParameterMap(g.domain().first, g.domain().second);
+    };
     auto point_of = [&](IgesParameterCursor& c, const char* what, int type) -> Vector3d {
         const int p = c.pointer(what);
         if (p == 0) c.fail(std::string(what) + " is missing");
@@ -236,7 +252,8 @@ IgesSurface IgesReader::surface(int de, const BoundaryHint* hint) {
             }
             case 120: {
                 const int axis = c.pointer("axis"), gen = c.pointer("generatrix");
-                const double sa = c.real("start angle"), ta = c.real("terminate angle");
+                const double sa = c.real("start angle");
+                const double ta = whole_turn_snapped(sa, c.real("terminate angle"));
                 if (axis == 0 || gen == 0) c.fail("surface of revolution without axis or generatrix");
                 const geom::NurbsCurve3d line = single_curve(axis, "axis");
                 const Vector3d p0 = line.evaluate(line.domain().first), p1 = line.evaluate(line.domain().second);
@@ -246,6 +263,7 @@ IgesSurface IgesReader::surface(int de, const BoundaryHint* hint) {
                 out.kind = "revolution";
                 out.map = IgesSurface::Map::kAngleV;
                 out.angle.emplace(sa, ta);
+                out.angle_u = arc_angles(gen, g);
                 break;
             }
             case 122: {
@@ -260,6 +278,7 @@ IgesSurface IgesReader::surface(int de, const BoundaryHint* hint) {
                 out.map = IgesSurface::Map::kAffine;
                 out.su = t1 - t0;
                 out.ou = t0;
+                out.angle_u = arc_angles(dir, d);
                 break;
             }
             case 108: {
@@ -372,7 +391,8 @@ IgesSurface IgesReader::surface(int de, const BoundaryHint* hint) {
                 }
                 IgesParameterCursor q(file_, file_.index_of(base));
                 const int axis = q.pointer("axis"), gen = q.pointer("generatrix");
-                const double sa = q.real("start angle"), ta = q.real("terminate angle");
+                const double sa = q.real("start angle");
+                const double ta = whole_turn_snapped(sa, q.real("terminate angle"));
                 if (axis == 0 || gen == 0) q.fail("surface of revolution without axis or generatrix");
                 const geom::NurbsCurve3d line = single_curve(axis, "axis");
                 const Vector3d p0 = line.evaluate(line.domain().first);
@@ -421,6 +441,7 @@ IgesSurface IgesReader::surface(int de, const BoundaryHint* hint) {
                 out.kind = "offset";
                 out.map = IgesSurface::Map::kAngleV;
                 out.angle.emplace(sa, ta);
+                out.angle_u = arc_angles(gen, g);
                 break;
             }
             default:
@@ -452,25 +473,31 @@ std::optional<geom::NurbsCurve2d> IgesReader::map_to_nurbs(const IgesSurface& s,
     std::vector<Vector2d> P;
     P.reserve(c.points().size());
     const std::vector<double> w = c.is_rational() ? c.weights() : std::vector<double>{};
-    if (s.map == IgesSurface::Map::kAffine) {
+    if (s.map == IgesSurface::Map::kAffine && !s.angle_u) {
         for (const Vector2d& p : c.points()) P.push_back(affine(p));
         return geom::NurbsCurve2d(c.degree(), c.knots(), std::move(P), w);
     }
-    // kAngleV: v = map(θ) is not affine. Axis-parallel polylines map exactly
-    // point by point; other curves are sampled densely into a polyline.
-    // On a closed sweep an angle λ = σ(θ - θ0) past [0, 2π) maps through
-    // θ - σ 2π k, k = floor(λ / 2π), onto v + k T (T the NURBS period, |θ1 - θ0|):
-    // continuous across the seam (exactly when the sweep is 2π).
-    const double sweep = std::fabs(s.angle->theta1() - s.angle->theta0());
-    const double sigma = s.angle->direction();
+    // kAngleV: v = map(θ) is not affine, nor u = angle_u(θ). Axis-parallel
+    // polylines map exactly point by point; other curves are sampled densely
+    // into a polyline. On a closed sweep an angle λ = σ(θ - θ0) past [0, 2π) maps
+    // through θ - σ 2π k, k = floor(λ / 2π), onto v + k T (T the NURBS period,
+    // |θ1 - θ0|): continuous across the seam (exactly when the sweep is 2π).
+    auto periodic = [](const geom::ArcParameterMap& m, double theta) {
+        const double sigma = m.direction(), sweep = std::fabs(m.theta1() - m.theta0());
+        const double k = std::floor(sigma * (theta - m.theta0()) / (2 * kPi));
+        return m.to_nurbs(theta - sigma * 2 * kPi * k) + k * sweep;
+    };
+    // An open arc: the turn of θ nearest the arc's middle (see IgesSurface::angle_u).
+    auto nearest_turn = [](const geom::ArcParameterMap& m, double theta) {
+        const double middle = 0.5 * (m.theta0() + m.theta1());
+        return m.to_nurbs(theta - 2 * kPi * std::round((theta - middle) / (2 * kPi)));
+    };
+    const bool closed_u = s.angle_u && std::fabs(s.angle_u->theta1() - s.angle_u->theta0()) >= 2 * kPi - 1e-9;
     auto mapped = [&](Vector2d p) {
         p = affine(p);
-        double k = 0;
-        if (s.periodic_angle) {
-            k = std::floor(sigma * (p.y() - s.angle->theta0()) / (2 * kPi));
-            p.y() -= sigma * 2 * kPi * k;
-        }
-        p.y() = s.angle->to_nurbs(p.y()) + k * sweep;
+        if (s.angle_u) p.x() = closed_u ? periodic(*s.angle_u, p.x()) : nearest_turn(*s.angle_u, p.x());
+        if (s.map == IgesSurface::Map::kAngleV)
+            p.y() = s.periodic_angle ? periodic(*s.angle, p.y()) : s.angle->to_nurbs(p.y());
         return p;
     };
     bool axis_parallel = c.degree() == 1;

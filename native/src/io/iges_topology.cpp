@@ -200,10 +200,12 @@ struct LoopBuilder {
         for (std::size_t k : on_seam) flagged[k] = 1;
         for (std::size_t k = 0; k < n; ++k)
             if (!flagged[k]) place_in_domain(loop.coedges[k].curve);
-        // Start after a coedge that is not on the seam, so its end is settled.
+        // Start after a coedge that is not on the seam, so its end is settled; a
+        // loop that is all seam (a whole ball: its seam down and up) keeps its
+        // first coedge's side and settles the others from it.
         std::size_t first = 0;
         while (first < n && flagged[first]) ++first;
-        if (first == n) return;
+        if (first == n) first = 0;
         for (std::size_t step = 1; step < n; ++step) {
             const std::size_t k = (first + step) % n;
             if (!flagged[k]) continue;

@@ -6,6 +6,7 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <GProp_GProps.hxx>
@@ -32,6 +33,7 @@
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Circle.hxx>
+#include <Geom_SurfaceOfRevolution.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
@@ -280,6 +282,25 @@ double write_ball_hole_on_seam_iges(const std::string& path, double R, double r,
     return write_iges(BRepAlgoAPI_Cut(ball, BRepPrimAPI_MakeCylinder(out, r, 2 * R).Shape()).Shape(), path, brep_mode);
 }
 
+double write_whole_ball_iges(const std::string& path, double R, bool brep_mode) {
+    return write_iges(BRepPrimAPI_MakeSphere(R).Shape(), path, brep_mode);
+}
+
+double write_revolved_arc_hole_iges(const std::string& path, double theta0, double theta1) {
+    const gp_Pnt centre(30, 0, 0);
+    const Handle(Geom_Circle) circle = new Geom_Circle(gp_Ax2(centre, gp::DY(), gp::DX()), 10);
+    const Handle(Geom_SurfaceOfRevolution) surface = new Geom_SurfaceOfRevolution(circle, gp::OZ());
+    const TopoDS_Face band = BRepBuilderAPI_MakeFace(surface, 0, 1.5 * M_PI, theta0, theta1, 1e-7).Face();
+    // Drilled through the band's middle, obliquely to its normal and its meridian.
+    const double m = 0.5 * (theta0 + theta1);
+    const gp_Pnt middle = surface->Value(0.75 * M_PI, m);
+    gp_Vec normal(gp_Pnt(30 * std::cos(0.75 * M_PI), 30 * std::sin(0.75 * M_PI), 0), middle);
+    normal.Normalize();
+    const gp_Vec along = normal + gp_Vec(0, 0, 0.3) + 0.4 * gp_Vec(-normal.Y(), normal.X(), 0);
+    const gp_Ax2 drill(middle.Translated(-20 * along.Normalized()), gp_Dir(along));
+    return write_iges(BRepAlgoAPI_Cut(band, BRepPrimAPI_MakeCylinder(drill, 3, 40).Shape()).Shape(), path, false);
+}
+
 double write_cone_apex_hole_iges(const std::string& path, double R, double h, double r, bool brep_mode) {
     const TopoDS_Shape cone = BRepPrimAPI_MakeCone(R, 0, h).Shape();
     const gp_Ax2 across(gp_Pnt(-4 * R / 3, 4 * R / 15, 0.3 * h), gp::DX());
@@ -287,7 +308,7 @@ double write_cone_apex_hole_iges(const std::string& path, double R, double h, do
                       brep_mode);
 }
 
-double write_filleted_hole_block_iges(const std::string& path) {
+double write_filleted_hole_block_iges(const std::string& path, bool brep_mode) {
     TopoDS_Shape block = BRepPrimAPI_MakeBox(80, 40, 20).Shape();
     block = BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 20, -5), gp::DZ()), 8, 30).Shape()).Shape();
     block = BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(60, 20, -5), gp::DZ()), 6, 30).Shape()).Shape();
@@ -295,7 +316,7 @@ double write_filleted_hole_block_iges(const std::string& path) {
     for (TopExp_Explorer e(block, TopAbs_EDGE); e.More(); e.Next())
         if (BRepAdaptor_Curve(TopoDS::Edge(e.Current())).GetType() == GeomAbs_Circle)
             round.Add(2.0, TopoDS::Edge(e.Current()));
-    return write_brep_mode_iges(round.Shape(), path);
+    return write_iges(round.Shape(), path, brep_mode);
 }
 
 double write_torus_hole_on_seams_iges(const std::string& path) {

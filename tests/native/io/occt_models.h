@@ -65,6 +65,11 @@ double write_sphere_cut_near_pole_iges(const std::string& path, double R, double
 // mode (144/142, the sphere as a surface of revolution). Returns BRepGProp's area.
 double write_ball_hole_on_seam_iges(const std::string& path, double R, double r, bool brep_mode);
 
+// A whole ball of radius R (BRepPrimAPI_MakeSphere): one face whose only loop is
+// its seam edge, down one side and up the other. IGES B-rep or faces mode.
+// Returns BRepGProp's area.
+double write_whole_ball_iges(const std::string& path, double R, bool brep_mode);
+
 // A cone of base radius R and height h (apex up) pierced across by a cylinder of
 // radius r along x at y = 4 R / 15, z = 0.3 h, as IGES faces mode (144: the cone a
 // surface of revolution whose domain side u = 0 is the apex) or B-rep mode (a 194
@@ -74,7 +79,14 @@ double write_cone_apex_hole_iges(const std::string& path, double R, double h, do
 // A block 80 x 40 x 20 with through holes of radius 8 and 6 whose rims are filleted
 // with radius 2 (quarter tubes of tori bounded by the iso-line where two of the torus's
 // Bezier patches meet), as IGES B-rep mode. Returns BRepGProp's area.
-double write_filleted_hole_block_iges(const std::string& path);
+double write_filleted_hole_block_iges(const std::string& path, bool brep_mode = true);
+
+// One face: the circle of radius 10 about (30, 0, 0) in the xz plane revolved about z
+// (a Geom_SurfaceOfRevolution) over 3pi/2 and the circle's parameters [theta0, theta1]
+// (OCCT's own: 3pi/2..2pi is the upper outer quarter), drilled with radius 3 through
+// its middle, obliquely (a loop that is no iso-curve). IGES faces mode: a 120 whose
+// generatrix is a 100 arc. Returns BRepGProp's area.
+double write_revolved_arc_hole_iges(const std::string& path, double theta0, double theta1);
 
 // A torus of radii 40 and 12 pierced radially by a cylinder of radius 4 where its two
 // seams meet ((52, 0, 0)), as IGES B-rep mode: the reader extends the torus past its

@@ -49,6 +49,24 @@ TEST(ReadIges, BareBsplineSurfaceBecomesFaceWithNaturalBoundary) {
     EXPECT_EQ(m.free_faces.size(), 1u);
 }
 
+// OCCT's IGES writer prints a whole turn's angles with 10 digits: Bottom.brep's
+// faces went from -6.283185307 to 2.17e-09, 2e-9 past 2pi, and two of its 323
+// faces were skipped ("ArcParameterMap: sweep 6.28319 rad ... expected <= 2pi").
+TEST(ReadIges, RevolutionWhoseSweepPassesAWholeTurnByRoundingIsAWholeTurn) {
+    for (const std::string& angles : {std::string("-6.283185307,2.17E-09"), std::string("0.,6.283185309")}) {
+        IgesTextBuilder b;
+        const int axis = b.add({110, "0.,0.,0.,0.,0.,1.;"});
+        const int line = b.add({110, "5.,0.,0.,5.,0.,3.;"});
+        b.add({120, std::to_string(axis) + "," + std::to_string(line) + "," + angles + ";"});
+        const geom::Model m = read_iges_text(b.text(), "turn.igs");
+        ASSERT_EQ(m.faces.size(), 1u) << angles;
+        EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
+        const auto [v0, v1] = m.faces[0].surface.domain_v();
+        // A cylinder of radius 5: the first and last rows of the whole turn meet.
+        EXPECT_LT((m.faces[0].surface.evaluate(0.5, v0) - m.faces[0].surface.evaluate(0.5, v1)).norm(), 1e-9) << angles;
+    }
+}
+
 TEST(ReadIges, TransformChainsAreComposed) {
     IgesTextBuilder b;
     // D1: translate by (0,0,5) and points to D3, which translates by (1,0,0).

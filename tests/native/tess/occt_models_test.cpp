@@ -305,6 +305,22 @@ TEST(OcctModels, IgesBrepSphereLoopsAPeriodApartArePlacedTogether) {
     std::filesystem::remove(path);
 }
 
+// A whole ball (OCCT's Axis_of_bearing.brep through its IGES writer: ten balls):
+// the loop is the seam edge twice, both uses projected onto u = 0, and the seam
+// sides were settled only after a coedge off the seam, which this loop lacks: the
+// loop had no area and the face "no triangles".
+TEST(OcctModels, IgesWholeBallWhoseLoopIsItsSeamTwiceIsMeshed) {
+    REQUIRE_OCCT();
+    for (const bool brep_mode : {true, false}) {
+        const std::string path = temp_path(brep_mode ? "ball_brep.igs" : "ball_faces.igs");
+        const double area = test::write_whole_ball_iges(path, 2, brep_mode);
+        const geom::Model model = io::read_model(path);
+        EXPECT_EQ(model.faces.size(), 1u) << path;
+        expect_whole(model, 0.01, area, brep_mode ? "B-rep mode" : "faces mode");
+        std::filesystem::remove(path);
+    }
+}
+
 // The hole on the sphere's seam: its two half circles end on the seam, one from
 // below 2pi and one from above 0, and the seam runs from each pole to the hole and
 // back. In faces mode (no shared edges) both uses of a seam stretch took the same
@@ -348,6 +364,30 @@ TEST(OcctModels, FilletAlongAKnotLineKeepsItsCells) {
     EXPECT_EQ(model.faces.size(), 12u);
     for (double T : {0.025, 0.09, 0.27}) expect_whole(model, T, area, "T = " + std::to_string(T));
     std::filesystem::remove(path);
+}
+
+// IGES faces mode writes a torus as a 120 surface of revolution of a 100 arc. The
+// arc's parameter is its angle, the NURBS arc's only at its knots, and OCCT's writer
+// keeps its circle's parameters (3pi/2..2pi) where the arc read by IGES 5.3's rule
+// starts at atan2 = -pi/2: Top.brep's fillets through OCCT's IGES writer were
+// "(u,v) box misses the surface's domain" (21 of 324 faces failed), and a loop
+// across the arc's parameters was mapped with the angle taken for the NURBS's.
+TEST(OcctModels, IgesRevolvedArcTrimsTakeTheArcsAnglesOnEitherTurn) {
+    REQUIRE_OCCT();
+    for (const auto& [a, b] : {std::pair{1.5 * M_PI, 2 * M_PI}, std::pair{-0.5 * M_PI, 0.0}, std::pair{0.3, 1.9}}) {
+        const std::string path = temp_path("revolved_arc.igs");
+        const double area = test::write_revolved_arc_hole_iges(path, a, b);
+        const geom::Model model = io::read_model(path);
+        ASSERT_EQ(model.faces.size(), 1u);
+        for (double T : {0.02, 0.1}) {
+            const std::string what = "arc " + std::to_string(a) + ".." + std::to_string(b) + ", T " + std::to_string(T);
+            const tess::TessellationResult result = mesh_at(model, T);
+            for (const tess::FailedFace& f : result.failed_faces) ADD_FAILURE() << what << ": " << f.reason;
+            EXPECT_EQ(result.faces_meshed, 1) << what;
+            EXPECT_NEAR(mesh_area(result.mesh) / area, 1.0, 2e-3) << what;
+        }
+        std::filesystem::remove(path);
+    }
 }
 
 // The torus face's loop runs along v = 0 and 2pi, knot lines of the surface the reader
