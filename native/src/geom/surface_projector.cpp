@@ -12,6 +12,13 @@ namespace {
 // of the surface size (1e-12: at double precision's useful limit).
 constexpr double kNewtonStep = 1e-12;
 constexpr int kNewtonIterations = 40;
+// A foot this close (fraction of the surface's size) to the point is found: invert
+// tries no further starts. Points that close are on the surface up to a file's
+// sewing gap or a mesh's tolerance, where the foot continuity gives is the one
+// wanted (a sewn corner 9e-5 off a sphere's pole: its nearest foot lies at another
+// longitude); the further starts are for feet clearly missed (15 mm from a pole on
+// a sphere of radius 110, 2.35 on a spindle torus of size 200).
+constexpr double kFootFound = 1e-4;
 // Two surface boundaries closer than this fraction of the size make the
 // direction closed (a seam); 1e-7 is above file rounding, below real gaps.
 constexpr double kSeamRelative = 1e-7;
@@ -118,6 +125,9 @@ Eigen::Vector2d SurfaceProjector::invert(const Eigen::Vector3d& x, const Eigen::
         const double d = (grid_[k] - x).squaredNorm();
         if (d < bd) bd = d, best = static_cast<int>(k);
     }
+    Eigen::Vector2d uv = newton(x, grid_uv(best));
+    double du = (s_.evaluate(uv.x(), uv.y()) - x).norm();
+    if (du <= kFootFound * size_) return settled(x, uv, du, near);
     // Newton also starts from the nearest sample off a pole (at a pole the free
     // parameter's derivative is zero: Newton cannot turn towards x's side) and
     // from the nearest one beyond best's neighbours (a surface folded near
@@ -131,14 +141,17 @@ Eigen::Vector2d SurfaceProjector::invert(const Eigen::Vector3d& x, const Eigen::
         if (d < bo) bo = d, off_pole = static_cast<int>(k);
         if (d < bf && !grid_neighbours(best, static_cast<int>(k))) bf = d, far = static_cast<int>(k);
     }
-    Eigen::Vector2d uv = newton(x, grid_uv(best));
-    double du = (s_.evaluate(uv.x(), uv.y()) - x).norm();
     for (int start : {at_pole_[best] ? off_pole : -1, far}) {
         if (start < 0) continue;
         const Eigen::Vector2d alt = newton(x, grid_uv(start));
         const double da = (s_.evaluate(alt.x(), alt.y()) - x).norm();
         if (da < du - kSameFoot * size_) uv = alt, du = da;
     }
+    return settled(x, uv, du, near);
+}
+
+Eigen::Vector2d SurfaceProjector::settled(const Eigen::Vector3d& x, Eigen::Vector2d uv, double du,
+                                          const Eigen::Vector2d* near) const {
     if (near) {
         Eigen::Vector2d alt = newton(x, *near);
         const double da = (s_.evaluate(alt.x(), alt.y()) - x).norm();

@@ -44,6 +44,8 @@ private:
     void mark_poles();
     Eigen::Vector2d grid_uv(int k) const;  // (u,v) of grid sample k
     bool grid_neighbours(int a, int b) const;  // samples a and b at most one step apart
+    // invert's foot uv (distance du from x) settled against `near`: continuity, seam side, pole.
+    Eigen::Vector2d settled(const Eigen::Vector3d& x, Eigen::Vector2d uv, double du, const Eigen::Vector2d* near) const;
 
     const NurbsSurface& s_;
     double u0_, u1_, v0_, v1_;

@@ -102,5 +102,21 @@ TEST(SurfaceProjector, SpindleTorusByItsAxisFindsTheFootInTheRightBasin) {
     }
 }
 
+// A sewn corner (faces 2e-4 apart) 9e-5 from a sphere's pole: its nearest foot lies
+// at another longitude, but the point is as good as at the pole, so the meridian's
+// edge must keep its own longitude there (with further starts taken for every point
+// not exactly on the surface, the edge swerved round the pole and the box of sewn
+// patches had 16 open edges).
+TEST(SurfaceProjector, PointAHairOffAPoleKeepsTheLongitudeOfItsNeighbour) {
+    const double R = 5;
+    const NurbsSurface sphere = unit_sphere(R);
+    const SurfaceProjector projector(sphere);
+    const Eigen::Vector3d x = on_sphere(R + 2e-4, 2.935, -kPi / 2 + 9e-5 / R);
+    const Eigen::Vector2d near(0.0, -1.2);  // up the meridian at longitude 0
+    const Eigen::Vector2d uv = projector.invert(x, &near);
+    EXPECT_NEAR(uv.x(), 0.0, 1e-9);
+    EXPECT_LT((sphere.evaluate(uv.x(), uv.y()) - x).norm(), 1e-3);
+}
+
 }  // namespace
 }  // namespace trimkit::geom
