@@ -10,6 +10,8 @@
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "arguments.h"
 #include "commands.h"
@@ -34,6 +36,16 @@ constexpr int kFailedFacesStatus = 3;
 constexpr size_t kListedWarnings = 10;
 
 using Clock = std::chrono::steady_clock;
+
+// The first kListedWarnings of `warnings` on stderr, one per line, then how many
+// `more` there are.
+void print_warnings(const std::string& path, const std::vector<std::string>& warnings, const std::string& more) {
+    for (size_t k = 0; k < warnings.size() && k < kListedWarnings; ++k)
+        std::cerr << "trimkit: " << path << ": warning: " << warnings[k] << "\n";
+    if (warnings.size() > kListedWarnings)
+        std::cerr << "trimkit: " << path << ": warning: " << warnings.size() - kListedWarnings << " more " << more
+                  << "\n";
+}
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
@@ -131,21 +143,13 @@ int run_mesh(const std::vector<std::string>& argv) {
                   << result.open_edges << " open edges, tolerance " << result.tolerance << ", "
                   << total << " s\n";
     }
-    for (size_t k = 0; k < model.warnings.size() && k < kListedWarnings; ++k)
-        std::cerr << "trimkit: " << path << ": warning: " << model.warnings[k] << "\n";
-    if (model.warnings.size() > kListedWarnings)
-        std::cerr << "trimkit: " << path << ": warning: " << model.warnings.size() - kListedWarnings
-                  << " more warnings from reading the file (trimkit info lists them)\n";
+    print_warnings(path, model.warnings, "warnings from reading the file (trimkit info lists them)");
     // Edges farther from a face than the tolerance: the mesh is within the file's own
     // edge gap there, not within T; say so, however the output is asked for.
-    size_t off_face_edges = 0;
-    for (const std::string& warning : result.warnings) {
-        if (warning.find("(more than the tolerance") == std::string::npos) continue;
-        if (++off_face_edges <= kListedWarnings) std::cerr << "trimkit: " << path << ": warning: " << warning << "\n";
-    }
-    if (off_face_edges > kListedWarnings)
-        std::cerr << "trimkit: " << path << ": warning: " << off_face_edges - kListedWarnings
-                  << " more edges lie farther than the tolerance from a face (--json lists them)\n";
+    std::vector<std::string> off_face_edges;
+    for (const std::string& warning : result.warnings)
+        if (warning.find("(more than the tolerance") != std::string::npos) off_face_edges.push_back(warning);
+    print_warnings(path, off_face_edges, "edges lie farther than the tolerance from a face (--json lists them)");
     for (const tess::FailedFace& failed : result.failed_faces) {
         const std::string prefix = "face " + std::to_string(failed.face) + ": ";
         std::cerr << "trimkit: " << path << ": " << (failed.reason.rfind(prefix, 0) == 0 ? "" : prefix)

@@ -6,6 +6,7 @@
 
 #include "geom/bspline_basis.h"
 #include "geom/error.h"
+#include "geom/knot_vector.h"
 
 namespace trimkit::geom {
 
@@ -15,13 +16,6 @@ double binomial(int n, int k) {
     double b = 1;
     for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
     return b;
-}
-
-bool is_clamped(const std::vector<double>& U, int p) {
-    const size_t m = U.size() - 1;
-    for (int i = 1; i <= p; ++i)
-        if (U[i] != U[0] || U[m - i] != U[m]) return false;
-    return true;
 }
 
 }  // namespace

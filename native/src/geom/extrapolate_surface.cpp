@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geom/error.h"
+#include "geom/knot_vector.h"
 
 namespace trimkit::geom {
 namespace {
@@ -75,12 +76,6 @@ NurbsSurface continue_u(const NurbsSurface& S, double to, bool at_end) {
                         R.is_rational() ? std::move(w) : std::vector<double>{});
 }
 
-// Whether both ends of U carry degree + 1 equal knots (the end spans' poles are then
-// the last degree + 1 poles, which continue_u takes for the end Bézier piece).
-bool clamped(const std::vector<double>& U, int p) {
-    return multiplicity(U, U.front()) >= p + 1 && multiplicity(U, U.back()) >= p + 1;
-}
-
 }  // namespace
 
 NurbsSurface extrapolated_surface(const NurbsSurface& S, double u0, double u1, double v0, double v1) {
@@ -91,7 +86,7 @@ NurbsSurface extrapolated_surface(const NurbsSurface& S, double u0, double u1, d
     // poles are not its end span's (shell1.brep via STEP: the face became the whole
     // control net's patch, 10x its area, 293 T off).
     NurbsSurface R = S;
-    if (!clamped(S.knots_u(), S.degree_u()) || !clamped(S.knots_v(), S.degree_v())) {
+    if (!is_clamped(S.knots_u(), S.degree_u()) || !is_clamped(S.knots_v(), S.degree_v())) {
         const auto [du0, du1] = S.domain_u();
         const auto [dv0, dv1] = S.domain_v();
         R = S.sub_surface(du0, du1, dv0, dv1);

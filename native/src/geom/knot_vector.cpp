@@ -73,6 +73,14 @@ std::vector<double> distinct_knots(const std::vector<double>& U, int p) {
     return result;
 }
 
+bool is_clamped(const std::vector<double>& U, int p) {
+    if (p < 0 || U.size() < 2 * static_cast<size_t>(p) + 2) return false;
+    const size_t m = U.size() - 1;
+    for (int i = 1; i <= p; ++i)
+        if (U[i] != U[0] || U[m - i] != U[m]) return false;
+    return true;
+}
+
 // Departure: the tolerance scales with the whole knot range U[0] .. U[m], since
 // the degree (and so the domain) is not known here.
 int knot_multiplicity(const std::vector<double>& U, double u) {

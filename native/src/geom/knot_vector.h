@@ -22,6 +22,10 @@ void validate_knot_vector(const std::vector<double>& U, int p, int point_count,
 // Distinct knot values inside the domain [U[p], U[n+1]], both ends included.
 std::vector<double> distinct_knots(const std::vector<double>& U, int p);
 
+// Whether both ends of U carry p + 1 equal knots (the curve or surface passes
+// through its end poles; its end spans' poles are the first and last p + 1).
+bool is_clamped(const std::vector<double>& U, int p);
+
 // Multiplicity of knot value u in U (knots within kKnotTolerance * domain length).
 int knot_multiplicity(const std::vector<double>& U, double u);
 

@@ -492,7 +492,8 @@ std::optional<geom::NurbsCurve2d> IgesReader::map_to_nurbs(const IgesSurface& s,
         const double middle = 0.5 * (m.theta0() + m.theta1());
         return m.to_nurbs(theta - 2 * kPi * std::round((theta - middle) / (2 * kPi)));
     };
-    const bool closed_u = s.angle_u && std::fabs(s.angle_u->theta1() - s.angle_u->theta0()) >= 2 * kPi - 1e-9;
+    const bool closed_u =
+        s.angle_u && std::fabs(s.angle_u->theta1() - s.angle_u->theta0()) >= 2 * kPi - geom::kAngleSlack;
     auto mapped = [&](Vector2d p) {
         p = affine(p);
         if (s.angle_u) p.x() = closed_u ? periodic(*s.angle_u, p.x()) : nearest_turn(*s.angle_u, p.x());
