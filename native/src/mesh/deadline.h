@@ -78,4 +78,9 @@ inline void check_deadline(Deadline* deadline, const char* stage) {
     if (deadline) deadline->check(stage);
 }
 
+// Calls deadline->check_now(stage) when there is a deadline.
+inline void check_deadline_now(Deadline* deadline, const char* stage) {
+    if (deadline) deadline->check_now(stage);
+}
+
 }  // namespace trimkit::mesh

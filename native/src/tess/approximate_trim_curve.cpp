@@ -197,7 +197,7 @@ TrimPolyline approximate_trim_curve(const geom::NurbsSurface& S, const geom::Nur
         const bool affine = S.is_affine();
         std::vector<SegmentHull> hulls;  // per segment of `out`
         for (const LiftedPiece& piece : lift_trim_curve(S, c)) {
-            if (deadline) deadline->check_now("trim curve approximation");
+            mesh::check_deadline_now(deadline, "trim curve approximation");
             if (!piece.exact) {
                 const long n = yang_steps(S, c, piece.t0, piece.t1, budget);
                 append_points(S, c, piece.t0, piece.t1, uniform_steps(n), &out, deadline);

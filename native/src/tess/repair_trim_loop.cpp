@@ -157,7 +157,7 @@ PieceExtent piece_extent(const std::vector<PolylinePoint>& P, const geom::NurbsS
         return best;
     };
     for (const auto& t : mesh::triangulate_polygon(uv, ring, {}, deadline)) {
-        mesh::check_deadline(deadline, "trim loop repair");
+        mesh::check_deadline_now(deadline, "trim loop repair");  // up to N^2 samples each
         const Eigen::Vector2d o = uv[t[0]];
         const double area3 = 0.5 * (X[t[1]] - X[t[0]]).cross(X[t[2]] - X[t[0]]).norm();
         const int N = std::clamp(static_cast<int>(std::ceil(2.0 * std::sqrt(area3) / reach)), 1, kMaxSampleDivisions);
@@ -233,6 +233,34 @@ int intersect(const std::vector<PolylinePoint>& P, int i, int j, double snap,
     for (const Eigen::Vector2d& x : {c, d}) events += cut(i, a, b, rl, x);
     for (const Eigen::Vector2d& x : {a, b}) events += cut(j, c, d, sl, x);
     return events;
+}
+
+// P with the cuts inserted, in order along each segment. Cuts are bucketed by
+// segment (a counting sort) and each bucket sorted by its fraction, so that a
+// hostile loop with millions of crossings stays within the deadline's checks.
+std::vector<PolylinePoint> insert_cuts(const std::vector<PolylinePoint>& P,
+                                       const std::vector<Insertion>& cuts, mesh::Deadline* deadline) {
+    const int n = static_cast<int>(P.size());
+    std::vector<size_t> start(n + 1, 0);
+    for (const Insertion& c : cuts) ++start[c.segment + 1];
+    for (int i = 0; i < n; ++i) start[i + 1] += start[i];
+    std::vector<Insertion> sorted(cuts.size());
+    std::vector<size_t> next(start.begin(), start.end() - 1);
+    for (const Insertion& c : cuts) sorted[next[c.segment]++] = c;
+    std::vector<PolylinePoint> Q;
+    Q.reserve(P.size() + cuts.size());
+    for (int i = 0; i < n; ++i) {
+        mesh::check_deadline(deadline, "trim loop repair");
+        const auto first = sorted.begin() + start[i], last = sorted.begin() + start[i + 1];
+        std::sort(first, last, [](const Insertion& a, const Insertion& b) { return a.s < b.s; });
+        Q.push_back(P[i]);
+        for (auto c = first; c != last; ++c) {
+            PolylinePoint x = lerp(P[i], P[(i + 1) % n], c->s);
+            x.uv = c->uv;
+            Q.push_back(x);
+        }
+    }
+    return Q;
 }
 
 // Splits a closed sequence at points it visits twice (within snap).
@@ -352,21 +380,8 @@ std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_u
             rep.crossings += intersect(P, std::min(i, j), std::max(i, j), snap_uv, &cuts);
         }
 
-    // Rebuild with the cuts in order along each segment.
-    std::sort(cuts.begin(), cuts.end(), [](const Insertion& a, const Insertion& b) {
-        return a.segment != b.segment ? a.segment < b.segment : a.s < b.s;
-    });
-    std::vector<PolylinePoint> Q;
-    Q.reserve(P.size() + cuts.size());
-    size_t c = 0;
-    for (int i = 0; i < n; ++i) {
-        Q.push_back(P[i]);
-        for (; c < cuts.size() && cuts[c].segment == i; ++c) {
-            PolylinePoint x = lerp(P[i], P[(i + 1) % n], cuts[c].s);
-            x.uv = cuts[c].uv;
-            Q.push_back(x);
-        }
-    }
+    mesh::check_deadline_now(deadline, "trim loop repair");
+    std::vector<PolylinePoint> Q = insert_cuts(P, cuts, deadline);
     Q = merge_close(Q, snap_uv);
 
     std::vector<TrimPolygon> out;
@@ -378,7 +393,7 @@ std::vector<TrimPolygon> repair_trim_loop(const TrimPolygon& loop, double snap_u
         rep.dropped_area += extent->area;
     };
     for (std::vector<PolylinePoint>& piece : split_at_repeats(Q, snap_uv, deadline)) {
-        mesh::check_deadline(deadline, "trim loop repair");
+        mesh::check_deadline_now(deadline, "trim loop repair");
         piece = merge_close(piece, snap_uv);
         const double a = piece.size() >= 3 ? signed_area(piece) : 0.0;
         if (piece.size() < 3 || std::abs(a) <= 0.5 * snap_uv * perimeter(piece)) {
