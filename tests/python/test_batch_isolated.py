@@ -51,9 +51,11 @@ def test_an_exception_comes_back_with_its_traceback(runner):
 
 
 def test_the_child_exits_when_its_parent_is_killed():
+    # The parent keeps its Runner: a temporary one would be collected after the call,
+    # closing the pipe, and the child would exit on EOF before it is checked.
     parent = subprocess.Popen(
         [sys.executable, "-c", "import os, time\nfrom trimkit_batch.isolated import Runner\n"
-         "print(Runner().call(os.getpid, ()), flush=True)\ntime.sleep(60)"],
+         "runner = Runner()\nprint(runner.call(os.getpid, ()), flush=True)\ntime.sleep(60)"],
         stdout=subprocess.PIPE, text=True, env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
     child = int(parent.stdout.readline())
     assert alive(child)
