@@ -32,6 +32,7 @@ BilinearError rational_error(const BezierPatch& patch, double tolerance) {
         result.bound = std::numeric_limits<double>::infinity();
         return result;
     }
+    result.derivatives = M;
     // Halving s divides the M_uu term by 4 and the M_uv term by 2: cut across the
     // larger of M_uu, M_vv (ties: the longer side in 3D, by the control polygon).
     result.split_in_u = M.M_uu > M.M_vv ||

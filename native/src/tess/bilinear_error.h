@@ -4,7 +4,10 @@
 // Distances are in model units; split parameters are local to the patch, in (0,1).
 #pragma once
 
+#include <optional>
+
 #include "tess/bezier_patch.h"
+#include "tess/second_derivative_bound.h"
 #include "tess/tessellation_options.h"
 
 namespace trimkit::tess {
@@ -13,6 +16,9 @@ struct BilinearError {
     double bound = 0.0;      // error bound (kGuaranteed) or estimate (kApproximate)
     bool split_in_u = true;  // direction of the split that reduces it most
     double split = 0.5;      // local split parameter in that direction, in (0,1)
+    // The second-derivative bound `bound` came from (rational patches, kGuaranteed), in
+    // the patch's local parameters: it holds on every sub-patch too (restricted_bound).
+    std::optional<SecondDerivativeBound> derivatives;
 };
 
 // [Balazs] Sec. 5.2: e <= e_bilin + 1/4 |P00 - Pm0 - P0n + Pmn| with

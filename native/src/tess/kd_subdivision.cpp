@@ -225,6 +225,9 @@ Split snap_split_to_trim_vertex(const TrimSegments& trims, const std::vector<int
 struct Node {
     BezierPatch patch;
     std::vector<int> segments;  // trim segments meeting the node (trims.active)
+    // The parent's second-derivative bound restricted to this node (local parameters):
+    // a node it already keeps within tolerance is a leaf without a bound of its own.
+    std::optional<SecondDerivativeBound> inherited;
 };
 
 // The trim segments of `from` that meet the (stretched) rectangle r, appended to out.
@@ -284,6 +287,10 @@ void subdivide(Node root, TrimSegments& trims, const Stretch& stretch, ErrorMode
             leaves.push_back(cell);
             continue;
         }
+        if (node.inherited && node.inherited->error() <= *tolerance) {
+            add_leaf(cell, *tolerance, leaves);
+            continue;
+        }
         const BilinearError error = cell_error(trims, current, mode, *tolerance);
         if (!std::isfinite(error.bound))
             throw geom::NumericalFailure(
@@ -308,6 +315,11 @@ void subdivide(Node root, TrimSegments& trims, const Stretch& stretch, ErrorMode
         Node first, second;
         first.patch = std::move(halves.first);
         second.patch = std::move(halves.second);
+        if (error.derivatives)
+            for (Node* child : {&first, &second})
+                child->inherited = restricted_bound(*error.derivatives,
+                                                    (child->patch.u1 - child->patch.u0) / (current.u1 - current.u0),
+                                                    (child->patch.v1 - child->patch.v0) / (current.v1 - current.v0));
         if (trims.active) {
             segments_meeting(trims, stretch(Cell{first.patch.u0, first.patch.u1, first.patch.v0, first.patch.v1}),
                              node.segments, first.segments);

@@ -50,11 +50,6 @@ struct Net {
     std::vector<Vec3> c;
     const Vec3& at(int i, int j) const { return c[i * (dv + 1) + j]; }
 };
-struct ScalarNet {
-    int du = 0, dv = 0;
-    std::vector<double> c;
-    double at(int i, int j) const { return c[i * (dv + 1) + j]; }
-};
 
 double binomial(int n, int k) {
     double r = 1.0;
@@ -62,53 +57,80 @@ double binomial(int n, int k) {
     return r;
 }
 
-// The factors C(a, i) C(b, i') / C(a + b, i + i') of a Bernstein product, i <= a, i' <= b,
-// row-major over (i, i').
-std::vector<double> product_factors(int a, int b) {
-    std::vector<double> out;
-    out.reserve(static_cast<size_t>((a + 1) * (b + 1)));
-    for (int i = 0; i <= a; ++i)
-        for (int i2 = 0; i2 <= b; ++i2) out.push_back(binomial(a, i) * binomial(b, i2) / binomial(a + b, i + i2));
-    return out;
-}
+// A homogeneous Bernstein net with each coefficient times C(du, i) C(dv, j), one array
+// per coordinate. With the binomials moved out of the sum, Farin's product
+// (f g)_k = sum_{i + i' = k} C(a, i) C(b, i') / C(a + b, k) f_i g_i' is a plain
+// convolution of scaled nets, divided by C(a + b, k) at the end.
+struct ScaledNet {
+    int du = 0, dv = 0;
+    std::vector<double> x, y, z, w;  // row-major over (i, j)
+    void resize(int u, int v) {
+        du = u;
+        dv = v;
+        for (std::vector<double>* c : {&x, &y, &z, &w}) c->assign(static_cast<size_t>((u + 1) * (v + 1)), 0.0);
+    }
+    void set(int i, int j, const Eigen::Vector4d& P, double scale) {
+        const size_t k = static_cast<size_t>(i * (dv + 1) + j);
+        x[k] = scale * P[0];
+        y[k] = scale * P[1];
+        z[k] = scale * P[2];
+        w[k] = scale * P[3];
+    }
+};
 
-// product_factors(a, b) for the degrees of a product f g with f of degree a and g of
-// degree a - 1 or a (the only pairs numerator() forms), computed once per process for
-// degrees up to kCachedDegree; other pairs are computed on the spot.
-constexpr int kCachedDegree = 12;
-const std::vector<double>& cached_product_factors(int a, int b, std::vector<double>& scratch) {
-    static const std::vector<std::vector<double>> table = [] {
-        std::vector<std::vector<double>> t((kCachedDegree + 1) * (kCachedDegree + 1));
-        for (int x = 0; x <= kCachedDegree; ++x)
-            for (int y = 0; y <= kCachedDegree; ++y) t[x * (kCachedDegree + 1) + y] = product_factors(x, y);
-        return t;
-    }();
-    if (a <= kCachedDegree && b <= kCachedDegree) return table[a * (kCachedDegree + 1) + b];
-    scratch = product_factors(a, b);
-    return scratch;
-}
-
-// f * g for a scalar net f and a vector net g, in Bernstein form. The binomial
-// factors are computed once per direction (the hot loop of the surface bound).
-Net product(const ScalarNet& f, const Net& g) {
-    Net out;
-    out.du = f.du + g.du;
-    out.dv = f.dv + g.dv;
-    out.c.assign((out.du + 1) * (out.dv + 1), Vec3::Zero());
-    std::vector<double> scratch_u, scratch_v;
-    const std::vector<double>& fu = cached_product_factors(f.du, g.du, scratch_u);
-    const std::vector<double>& fv = cached_product_factors(f.dv, g.dv, scratch_v);
-    for (int i = 0; i <= f.du; ++i)
-        for (int i2 = 0; i2 <= g.du; ++i2) {
-            const double cu = fu[i * (g.du + 1) + i2];
-            for (int j = 0; j <= f.dv; ++j) {
-                const double fij = f.at(i, j);
-                Vec3* row = &out.c[(i + i2) * (out.dv + 1) + j];
-                for (int j2 = 0; j2 <= g.dv; ++j2)
-                    row[j2] += cu * fv[j * (g.dv + 1) + j2] * fij * g.at(i2, j2);
+// The patch's net (in_s: false) or its s- or t-derivative net (in_s: true / false,
+// `derivative` set), scaled as ScaledNet.
+ScaledNet scaled_net(const BezierPatch& patch, bool derivative, bool in_s) {
+    const int m = patch.p, n = patch.q;
+    const int du = derivative && in_s ? m - 1 : m, dv = derivative && !in_s ? n - 1 : n;
+    ScaledNet out;
+    out.resize(du, dv);
+    for (int i = 0; i <= du; ++i)
+        for (int j = 0; j <= dv; ++j) {
+            const double scale = binomial(du, i) * binomial(dv, j);
+            if (!derivative) {
+                out.set(i, j, patch.point(i, j), scale);
+                continue;
             }
+            const int i1 = i + (in_s ? 1 : 0), j1 = j + (in_s ? 0 : 1);
+            out.set(i, j, (in_s ? m : n) * (patch.point(i1, j1) - patch.point(i, j)), scale);
         }
     return out;
+}
+
+// out[k] += a d[k] - b e[k] for k < n: the convolution's inner loop, over arrays that
+// do not overlap (so that the compiler may vectorise it).
+void multiply_add_row(int n, double a, const double* __restrict d, double b, const double* __restrict e,
+                      double* __restrict out) {
+    for (int k = 0; k < n; ++k) out[k] += a * d[k] - b * e[k];
+}
+
+// K = w H_s - H w_s (in_s) or L = w H_t - H w_t, in Bernstein form of degree
+// (2m - 1, 2n) or (2m, 2n - 1): both products in one convolution of the scaled nets
+// of P = (H, w) and of its derivative D (H w_d = w_d H, so both pair P's index with D's).
+Net numerator(const BezierPatch& patch, bool in_s) {
+    const ScaledNet P = scaled_net(patch, false, in_s), D = scaled_net(patch, true, in_s);
+    const int ku = P.du + D.du, kv = P.dv + D.dv;
+    std::vector<double> kx((ku + 1) * (kv + 1), 0.0), ky(kx), kz(kx);
+    for (int i = 0; i <= P.du; ++i)
+        for (int j = 0; j <= P.dv; ++j) {
+            const size_t p = static_cast<size_t>(i * (P.dv + 1) + j);
+            const double pw = P.w[p], px = P.x[p], py = P.y[p], pz = P.z[p];
+            for (int i2 = 0; i2 <= D.du; ++i2) {
+                const size_t d = static_cast<size_t>(i2 * (D.dv + 1)), k = static_cast<size_t>((i + i2) * (kv + 1) + j);
+                multiply_add_row(D.dv + 1, pw, &D.x[d], px, &D.w[d], &kx[k]);
+                multiply_add_row(D.dv + 1, pw, &D.y[d], py, &D.w[d], &ky[k]);
+                multiply_add_row(D.dv + 1, pw, &D.z[d], pz, &D.w[d], &kz[k]);
+            }
+        }
+    Net K{ku, kv, {}};
+    K.c.reserve(kx.size());
+    for (int k = 0; k <= ku; ++k)
+        for (int l = 0; l <= kv; ++l) {
+            const size_t c = static_cast<size_t>(k * (kv + 1) + l);
+            K.c.emplace_back(Vec3(kx[c], ky[c], kz[c]) / (binomial(ku, k) * binomial(kv, l)));
+        }
+    return K;
 }
 
 // Largest |control point| of the net, and of its s- and t-derivative nets.
@@ -125,32 +147,6 @@ double max_derivative_norm(const Net& n, bool in_s) {
         for (int j = 0; j + (in_s ? 0 : 1) <= n.dv; ++j)
             r = std::max(r, (n.at(i + (in_s ? 1 : 0), j + (in_s ? 0 : 1)) - n.at(i, j)).norm());
     return d * r;
-}
-
-// K = w H_s - H w_s (in_s) or L = w H_t - H w_t.
-Net numerator(const BezierPatch& patch, bool in_s) {
-    const int m = patch.p, n = patch.q;
-    ScalarNet w{m, n, {}};
-    Net H{m, n, {}};
-    for (int i = 0; i <= m; ++i)
-        for (int j = 0; j <= n; ++j) {
-            w.c.push_back(patch.point(i, j)[3]);
-            H.c.push_back(patch.point(i, j).head<3>());
-        }
-    ScalarNet w_d{in_s ? m - 1 : m, in_s ? n : n - 1, {}};
-    Net H_d{w_d.du, w_d.dv, {}};
-    const int d = in_s ? m : n;
-    for (int i = 0; i <= w_d.du; ++i)
-        for (int j = 0; j <= w_d.dv; ++j) {
-            const int i1 = i + (in_s ? 1 : 0), j1 = j + (in_s ? 0 : 1);
-            w_d.c.push_back(d * (w.at(i1, j1) - w.at(i, j)));
-            H_d.c.push_back(d * (H.at(i1, j1) - H.at(i, j)));
-        }
-    Net K = product(w, H_d);
-    // H w_d = w_d H: the same product with the roles swapped.
-    const Net minus = product(w_d, H);
-    for (size_t k = 0; k < K.c.size(); ++k) K.c[k] -= minus.c[k];
-    return K;
 }
 
 double max_weight_derivative(const BezierPatch& patch, bool in_s) {

@@ -21,4 +21,11 @@ struct SecondDerivativeBound {
 // Infinite when a weight is <= 0 or a value is not finite.
 SecondDerivativeBound second_derivative_bound(const BezierPatch& patch);
 
+// A patch's bound M (local parameters) on its sub-patch covering the fractions fu of
+// its u range and fv of its v range, in the sub-patch's local parameters: the suprema
+// over the sub-patch are at most M's, and d/ds' = fu d/ds.
+inline SecondDerivativeBound restricted_bound(const SecondDerivativeBound& M, double fu, double fv) {
+    return {M.M_uu * fu * fu, M.M_uv * fu * fv, M.M_vv * fv * fv};
+}
+
 }  // namespace trimkit::tess
