@@ -16,6 +16,7 @@
 
 #include <Eigen/Geometry>
 
+#include "io/face_loops.h"
 #include "geom/arc_parameter_map.h"
 #include "geom/model.h"
 #include "io/iges_file.h"
@@ -68,10 +69,6 @@ struct IgesSurface {
 // equal, which writers often emit with the rational flag set. [IGES] 4.23, 4.24.
 std::vector<double> iges_weights(std::vector<double> w, bool polynomial_flag);
 
-// Model-space points a face's boundary passes near, used to size unbounded
-// surfaces (planes, cylinders, ...) before their patch is built.
-using BoundaryHint = std::vector<Eigen::Vector3d>;
-
 class IgesReader {
 public:
     // monitor: checked (ReadStopped) and told the progress between root entities.
@@ -120,6 +117,9 @@ public:
     // nullopt when the surface has no usable map.
     std::optional<geom::NurbsCurve2d> map_to_nurbs(const IgesSurface& s,
                                                    const geom::NurbsCurve2d& c) const;
+    // face_loops.h's context for faces on `s` (which must outlive it): closure
+    // tolerance, the file's resolution and map_to_nurbs.
+    FaceLoopsContext face_loops_context(const IgesSurface& s) const;
 
     // ---- topology (iges_topology.cpp) ----
     // Faces of a 144 / 143 / 510-with-surface / bare surface entity, placed by
