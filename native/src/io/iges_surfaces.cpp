@@ -6,11 +6,13 @@
 // surfaces take their extent from the boundary points of the face using them.
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "geom/analytic_surfaces.h"
 #include "geom/bspline_basis.h"
 #include "geom/extend_closed_surface.h"
 #include "geom/error.h"
+#include "io/boundary_extent.h"
 #include "io/iges_reader.h"
 
 namespace trimkit::io {
@@ -211,16 +213,10 @@ IgesSurface IgesReader::surface(int de, const BoundaryHint* hint) {
     };
     // Extent of the local hint along directions (for unbounded surfaces).
     auto range = [&](const Vector3d& o, const Vector3d& d, double* lo, double* hi) {
-        *lo = std::numeric_limits<double>::infinity();
-        *hi = -*lo;
-        for (const Vector3d& p : local) {
-            const double t = (p - o).dot(d);
-            *lo = std::min(*lo, t);
-            *hi = std::max(*hi, t);
-        }
-        const double m = kHintMargin * std::max(*hi - *lo, 1e-9 * (1 + std::fabs(*lo) + std::fabs(*hi)));
-        *lo -= m;
-        *hi += m;
+        std::vector<double> t;
+        t.reserve(local.size());
+        for (const Vector3d& p : local) t.push_back((p - o).dot(d));
+        std::tie(*lo, *hi) = padded_extent(t, kHintMargin);
     };
     try {
         IgesParameterCursor c(file_, file_.index_of(de));
