@@ -20,7 +20,7 @@
 namespace trimkit::cli {
 namespace {
 
-const char* const kCheckUsage = "trimkit check MODEL MESH [--json] [--samples N] [--threads N] [--read-timeout SECONDS] | trimkit check MODEL_A MODEL_B";
+const char* const kCheckUsage = "trimkit check MODEL MESH [--json] [--samples N] [--threads N] [--read-timeout SECONDS] [--step-reader occt|own|auto] | trimkit check MODEL_A MODEL_B";
 
 int count_option(const Arguments& args, const std::string& name, int fallback, int minimum) {
     const double x = args.number(name, fallback);
@@ -121,7 +121,7 @@ int check_models(const std::string& a_path, const std::string& b_path) {
 }  // namespace
 
 int run_check(const std::vector<std::string>& argv) {
-    const Arguments args(argv, {"--json"}, {"--samples", "--threads", "--read-timeout"});
+    const Arguments args(argv, {"--json"}, {"--samples", "--threads", "--read-timeout", "--step-reader"});
     args.expect_positionals(2, kCheckUsage);
     if (is_model_path(args.positionals()[1])) return check_models(args.positionals()[0], args.positionals()[1]);
     tess::DeviationOptions options;

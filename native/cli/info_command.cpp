@@ -9,8 +9,8 @@
 namespace trimkit::cli {
 
 int run_info(const std::vector<std::string>& argv) {
-    const Arguments args(argv, {"--json"}, {"--read-timeout"});
-    args.expect_positionals(1, "trimkit info MODEL [--json] [--read-timeout SECONDS]");
+    const Arguments args(argv, {"--json"}, {"--read-timeout", "--step-reader"});
+    args.expect_positionals(1, "trimkit info MODEL [--json] [--read-timeout SECONDS] [--step-reader occt|own|auto]");
     const std::string& path = args.positionals()[0];
     const io::ModelSummary summary = io::summarize(io::read_model(path, read_options(args)), path);
     std::cout << (args.flag("--json") ? io::to_json(summary) + "\n" : io::to_text(summary));

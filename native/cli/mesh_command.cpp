@@ -28,7 +28,7 @@ namespace {
 const char* const kMeshUsage =
     "trimkit mesh MODEL -o OUT --tolerance T [--relative] [--angle DEGREES] "
     "[--mode guaranteed|approximate] [--trim-method bezier3d|yang|param] [--threads N] "
-    "[--face-timeout SECONDS] [--read-timeout SECONDS] [--json] [--strict]";
+    "[--face-timeout SECONDS] [--read-timeout SECONDS] [--step-reader occt|own|auto] [--json] [--strict]";
 
 // Exit status of --strict when a face failed (0 success, 1 internal, 2 bad input).
 constexpr int kFailedFacesStatus = 3;
@@ -56,7 +56,7 @@ double seconds_since(Clock::time_point start) {
 int run_mesh(const std::vector<std::string>& argv) {
     const Arguments args(argv, {"--json", "--relative", "--strict"},
                          {"-o", "--output", "--tolerance", "--angle", "--mode", "--trim-method", "--threads",
-                          "--face-timeout", "--read-timeout"});
+                          "--face-timeout", "--read-timeout", "--step-reader"});
     args.expect_positionals(1, kMeshUsage);
     const std::string& path = args.positionals()[0];
     const std::string out = args.has("-o") ? args.value("-o", "") : args.value("--output", "");

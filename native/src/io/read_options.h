@@ -19,8 +19,14 @@ namespace trimkit::io {
 // seconds; a damaged one can keep OCCT's healing busy for minutes.
 constexpr double kDefaultReadTimeout = 120.0;
 
+// Who reads STEP: Open CASCADE (with its healing), trimkit's own reader
+// (io/read_step_native.h: single parts of the kinds it translates; others refused), or
+// trimkit's own with Open CASCADE for the files it does not take on.
+enum class StepReader { kOcct, kOwn, kAuto };
+
 struct ReadOptions {
     double timeout = kDefaultReadTimeout;        // seconds; 0 = no limit
+    StepReader step_reader = StepReader::kOcct;
     std::function<void(double)> progress;        // fraction read; empty = none
     const std::atomic<bool>* cancel = nullptr;   // set from any thread to stop the read
 };

@@ -21,7 +21,16 @@ namespace trimkit::io {
 // indicator whose UserBreak stops it on the timeout or the cancel flag; both are
 // checked again after parsing and between faces (ReadStopped). Progress: parsing
 // (no steps of its own) up to 0.3, the transfer up to 0.85, the translation to 1.
+// options.step_reader chooses who reads (read_options.h); kAuto notes in
+// Model::warnings why a file went to OCCT ("read through Open CASCADE: ...").
 geom::Model read_step(const std::string& path, const ReadOptions& options = {});
+
+// The file read by trimkit's own reader (io/read_step_native.h) under `options`' limits.
+// Throws UnsupportedStepEntity (io/step_geometry.h) for files it does not take on.
+geom::Model read_step_own(const std::string& path, const ReadOptions& options = {});
+
+// The file read through Open CASCADE (with its healing); builds with OCCT only.
+geom::Model read_step_occt(const std::string& path, const ReadOptions& options = {});
 
 // True when this build of trimkit can read STEP (it was built with OCCT).
 bool step_supported();

@@ -41,6 +41,7 @@
 #include "io/occt_progress.h"
 #include "io/occt_shape.h"
 #include "io/occt_support.h"
+#include "io/step_geometry.h"
 #include "io/step_instance_names.h"
 
 namespace trimkit::io {
@@ -374,6 +375,22 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
 bool step_supported() { return true; }
 
 geom::Model read_step(const std::string& path, const ReadOptions& options) {
+    std::string not_own;  // why trimkit's own reader left the file to OCCT (kAuto)
+    if (options.step_reader != StepReader::kOcct) {
+        try {
+            return read_step_own(path, options);
+        } catch (const UnsupportedStepEntity& e) {
+            if (options.step_reader == StepReader::kOwn)
+                throw geom::ReadError(path, 0, std::string("trimkit's own STEP reader does not take this file: ") + e.what());
+            not_own = e.what();
+        }
+    }
+    geom::Model model = read_step_occt(path, options);
+    if (!not_own.empty()) model.warnings.push_back("read through Open CASCADE: " + not_own);
+    return model;
+}
+
+geom::Model read_step_occt(const std::string& path, const ReadOptions& options) {
     silence_occt_stdout();
     try {
         OcctSignalGuard guard;

@@ -16,6 +16,19 @@
 namespace trimkit::io {
 namespace {
 
+// Periodic directions are built over the whole turn [0, 2pi], whatever arc the
+// boundary's points cover (`covered.full` keeps whether they go all the way round):
+// the points cannot tell which side of them the face lies (a ball whose loop is its
+// seam edge and a hole covers a narrow arc of longitude, its face all the rest).
+// face_loops unwraps loops across the seam and extends the surface over them.
+AngularExtent whole_turn(const AngularExtent& covered) {
+    AngularExtent turn;
+    turn.lo = 0.0;
+    turn.hi = 2.0 * 3.14159265358979323846;
+    turn.full = covered.full;
+    return turn;
+}
+
 using Eigen::Vector3d;
 using geom::NurbsCurve3d;
 using geom::NurbsSurface;
@@ -808,7 +821,7 @@ public:
             out.kind = "plane";
             return out;
         }
-        const AngularExtent around = angular_extent(theta, kStepBoundaryMargin);
+        const AngularExtent around = whole_turn(angular_extent(theta, kStepBoundaryMargin));
         out.map.u = arc_axis(around.lo, around.hi);
         if (e.kind == K::kCylinder) {
             const auto [z0, z1] = padded_extent(coordinate(2), kStepBoundaryMargin);
@@ -834,14 +847,10 @@ public:
             return out;
         }
         if (e.kind == K::kSphere) {
-            double phi0 = -0.5 * kPi, phi1 = 0.5 * kPi;
-            if (!around.full) {
-                std::vector<double> phi;
-                for (const Vector3d& x : q) phi.push_back(std::atan2(x.z(), std::hypot(x.x(), x.y())));
-                const auto [lo, hi] = padded_extent(phi, kStepBoundaryMargin);
-                phi0 = std::max(phi0, lo);
-                phi1 = std::min(phi1, hi);
-            }
+            // Pole to pole: the boundary cannot tell which side of it the face is (a
+            // sphere less a corner: the boundary lies by the cut, the face reaches the
+            // far pole).
+            const double phi0 = -0.5 * kPi, phi1 = 0.5 * kPi;
             out.nurbs = geom::sphere_patch(f.O, f.Z, f.X, e.r, around.lo, around.hi, phi0, phi1);
             out.kind = "sphere";
             out.map.v = arc_axis(phi0, phi1);
@@ -869,7 +878,7 @@ public:
                 phi1 = std::min(phi1, hi);
             }
         } else {
-            const AngularExtent tube = angular_extent(phi, kStepBoundaryMargin);
+            const AngularExtent tube = whole_turn(angular_extent(phi, kStepBoundaryMargin));
             phi0 = tube.lo;
             phi1 = tube.hi;
         }
@@ -889,7 +898,7 @@ public:
             const auto [t0, t1] = padded_extent(t, kStepBoundaryMargin);
             return {geom::line_segment(c.at(t0), c.at(t1), t0, t1), {}};
         }
-        const AngularExtent e = angular_extent(t, kStepBoundaryMargin);
+        const AngularExtent e = whole_turn(angular_extent(t, kStepBoundaryMargin));
         NurbsCurve3d n = c.kind == Curve::Kind::kCircle ? geom::circular_arc(c.O, c.X, c.Y, c.a, e.lo, e.hi)
                                                         : geom::ellipse_arc(c.O, c.X, c.Y, c.a, c.b, e.lo, e.hi);
         return {std::move(n), arc_axis(e.lo, e.hi)};
@@ -938,7 +947,7 @@ public:
                                 : std::atan2(a.dot(r_g.cross(r_x)), r_g.dot(r_x)));
         }
         auto [gen, gen_map] = swept_piece(g, t, p);
-        const AngularExtent around = angular_extent(theta, kStepBoundaryMargin);
+        const AngularExtent around = whole_turn(angular_extent(theta, kStepBoundaryMargin));
         Surface out;
         out.nurbs = geom::surface_of_revolution(gen, A, a, around.lo, around.hi);
         out.kind = "revolution";

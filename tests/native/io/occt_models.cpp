@@ -249,7 +249,18 @@ double area_of(const TopoDS_Shape& shape) {
     return props.Mass();
 }
 
+bool is_step_path(const std::string& path) {
+    return path.size() > 4 && (path.compare(path.size() - 4, 4, ".stp") == 0 || path.compare(path.size() - 5, 5, ".step") == 0);
+}
+
+// IGES, or STEP (AP214, as OCCT writes it) when the path ends in .stp or .step.
 double write_iges(const TopoDS_Shape& shape, const std::string& path, bool brep_mode) {
+    if (is_step_path(path)) {
+        STEPControl_Writer writer;
+        if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path.c_str()) != IFSelect_RetDone)
+            throw std::runtime_error("cannot write " + path);
+        return area_of(shape);
+    }
     IGESControl_Controller::Init();
     IGESControl_Writer writer("MM", brep_mode ? 1 : 0);
     if (!writer.AddShape(shape) || !writer.Write(path.c_str())) throw std::runtime_error("cannot write " + path);

@@ -49,7 +49,8 @@ void write_box_assembly_step(const std::string& path, double dx, double dy, doub
 
 // Solids written by OCCT's IGES writer in B-rep mode (186/514/510/508 on 192/196
 // surfaces with form 1): each returns the solid's area by OCCT's BRepGProp, the
-// independent measure the tests compare trimkit's mesh with.
+// independent measure the tests compare trimkit's mesh with. A path ending in .stp or
+// .step gets the solid as STEP (OCCT's AP214 writer) instead, whatever the mode.
 // A cylinder of radius R about z, z in [0, h], pierced by a cross hole of radius r
 // along x at z = h/2: one hole lies on the seam (u = 0), so the lateral face's outer
 // loop runs round that hole and OCCT's writer flags the other hole as the outer loop.

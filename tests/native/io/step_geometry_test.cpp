@@ -253,7 +253,7 @@ TEST(StepGeometry, CylinderWithAFullTurnBoundary) {
     expect_on_surface(s, b, st, 1e-9);
 }
 
-TEST(StepGeometry, CylinderPartialTurnAcrossAngleZero) {
+TEST(StepGeometry, CylinderPartialTurnAcrossAngleZeroGetsTheWholeTurn) {
     const Parsed parsed(frame("0.,0.,0.") + "#1=CYLINDRICAL_SURFACE('',#10,1.);\n");
     const StepGeometry& g = parsed.g;
     // A face from -30 to +60 degrees: arcs and two rulings.
@@ -261,9 +261,10 @@ TEST(StepGeometry, CylinderPartialTurnAcrossAngleZero) {
     std::vector<Vector3d> b = arc_points(1, 0, a0, a1, 16);
     for (const Vector3d& p : arc_points(1, 2, a1, a0, 16)) b.push_back(p);
     const StepGeometry::Surface s = g.surface(1, b);
-    const double m = 0.02 * (a1 - a0);
-    EXPECT_NEAR(s.map.u.arc->theta0(), a0 + 2 * kPi - m, 1e-12);  // the turn [0, 2π) holds the start
-    EXPECT_NEAR(s.map.u.arc->theta1(), a1 + 2 * kPi + m, 1e-12);
+    // Periodic directions get the whole turn [0, 2pi] (the loops across the seam are
+    // face_loops' to unwrap): the boundary's points cannot tell which side is the face.
+    EXPECT_EQ(s.map.u.arc->theta0(), 0.0);
+    EXPECT_NEAR(s.map.u.arc->theta1(), 2 * kPi, 1e-15);
     std::vector<Vector2d> st;
     for (const Vector3d& p : b) {
         double a = std::atan2(p.y(), p.x());
@@ -281,9 +282,8 @@ TEST(StepGeometry, ConeSemiAngleInDegrees) {
     for (const Vector3d& p : arc_points(3, 2, kPi / 2, 0, 16)) b.push_back(p);
     const StepGeometry::Surface s = g.surface(1, b);
     EXPECT_EQ(s.kind, "cone");
-    const double m = 0.02 * kPi / 2;
-    EXPECT_NEAR(s.map.u.arc->theta0(), -m, 1e-12);
-    EXPECT_NEAR(s.map.u.arc->theta1(), kPi / 2 + m, 1e-12);
+    EXPECT_EQ(s.map.u.arc->theta0(), 0.0);
+    EXPECT_NEAR(s.map.u.arc->theta1(), 2 * kPi, 1e-15);
     EXPECT_NEAR(s.nurbs.domain_v().first, -0.04, 1e-14);
     EXPECT_NEAR(s.nurbs.domain_v().second, 2.04, 1e-14);
     const Vector2d uv = s.map.apply(Vector2d(0, 2));
@@ -323,10 +323,11 @@ TEST(StepGeometry, SphereOctantUpToThePole) {
     for (const Vector2d& x : st) b.push_back(at(x.x(), x.y()));
     const StepGeometry::Surface s = g.surface(1, b);
     EXPECT_EQ(s.kind, "sphere");
-    const double m = 0.02 * kPi / 2;
-    EXPECT_NEAR(s.map.u.arc->theta0(), -m, 1e-12);
-    EXPECT_NEAR(s.map.u.arc->theta1(), kPi / 2 + m, 1e-12);
-    EXPECT_NEAR(s.map.v.arc->theta0(), -m, 1e-12);
+    // The whole sphere: an octant's boundary and the rest of the sphere less an
+    // octant have the same points.
+    EXPECT_EQ(s.map.u.arc->theta0(), 0.0);
+    EXPECT_NEAR(s.map.u.arc->theta1(), 2 * kPi, 1e-15);
+    EXPECT_EQ(s.map.v.arc->theta0(), -kPi / 2);
     EXPECT_EQ(s.map.v.arc->theta1(), kPi / 2);  // not past the pole
     expect_near(s.nurbs.evaluate(s.nurbs.domain_u().first, s.nurbs.domain_v().second), Vector3d(1, 1, 3), 1e-14);
     st[32] = Vector2d(kPi / 4, kPi / 2);  // the pole has any longitude
@@ -355,9 +356,8 @@ TEST(StepGeometry, TorusRingOfAQuarterTube) {
     EXPECT_EQ(s.kind, "torus");
     EXPECT_EQ(s.map.u.arc->theta0(), 0.0);
     EXPECT_NEAR(s.map.u.arc->theta1(), 2 * kPi, 1e-15);
-    const double m = 0.02 * kPi / 2;
-    EXPECT_NEAR(s.map.v.arc->theta0(), -m, 1e-12);
-    EXPECT_NEAR(s.map.v.arc->theta1(), kPi / 2 + m, 1e-12);
+    EXPECT_EQ(s.map.v.arc->theta0(), 0.0);  // the whole tube
+    EXPECT_NEAR(s.map.v.arc->theta1(), 2 * kPi, 1e-15);
     expect_on_surface(s, b, st, 1e-12);
 }
 
@@ -382,8 +382,8 @@ TEST(StepGeometry, SpindleTorusPointsAcrossTheAxis) {
         std::vector<Vector3d> b;
         for (const Vector2d& x : st) b.push_back(at(x.x(), x.y()));
         const StepGeometry::Surface s = parsed.g.surface(1, b);
-        EXPECT_NEAR(s.map.u.arc->theta0(), -0.02 * kPi / 2, 1e-9) << surface;
-        EXPECT_NEAR(s.map.u.arc->theta1(), kPi / 2 + 0.02 * kPi / 2, 1e-9) << surface;
+        EXPECT_EQ(s.map.u.arc->theta0(), 0.0) << surface;
+        EXPECT_NEAR(s.map.u.arc->theta1(), 2 * kPi, 1e-15) << surface;
         expect_on_surface(s, b, st, 1e-12);
     }
 }
@@ -485,8 +485,8 @@ TEST(StepGeometry, ExtrusionOfACircle) {
     EXPECT_EQ(s.kind, "extrusion");
     EXPECT_NEAR(s.nurbs.domain_v().first, -0.04, 1e-12);
     EXPECT_NEAR(s.nurbs.domain_v().second, 2.04, 1e-12);
-    EXPECT_NEAR(s.map.u.arc->theta0(), -0.02 * kPi, 1e-9);
-    EXPECT_NEAR(s.map.u.arc->theta1(), kPi + 0.02 * kPi, 1e-9);
+    EXPECT_EQ(s.map.u.arc->theta0(), 0.0);  // the whole circle
+    EXPECT_NEAR(s.map.u.arc->theta1(), 2 * kPi, 1e-15);
     std::vector<Vector2d> st;
     for (const Vector3d& p : b) st.emplace_back(std::atan2(p.y(), p.x()) < -1 ? kPi : std::atan2(p.y(), p.x()), p.z() / 2);
     expect_on_surface(s, b, st, 1e-12);
@@ -515,12 +515,12 @@ TEST(StepGeometry, RevolutionOfASlantedLine) {
     EXPECT_TRUE(s.map.swap);
     EXPECT_NEAR(s.nurbs.domain_u().first, -0.04, 1e-12);
     EXPECT_NEAR(s.nurbs.domain_u().second, 2.04, 1e-12);
-    EXPECT_NEAR(s.map.v.arc->theta0(), -0.02 * kPi / 2, 1e-9);
-    EXPECT_NEAR(s.map.v.arc->theta1(), kPi / 2 + 0.02 * kPi / 2, 1e-9);
+    EXPECT_EQ(s.map.v.arc->theta0(), 0.0);  // the whole turn
+    EXPECT_NEAR(s.map.v.arc->theta1(), 2 * kPi, 1e-15);
     expect_on_surface(s, b, st, 1e-12);
 }
 
-TEST(StepGeometry, RevolutionOfAnArcFindsTheCoveredArc) {
+TEST(StepGeometry, RevolutionOfAnArcTakesTheWholeGeneratrixCircle) {
     // A circle of radius 1 about (3,0,0) in the xz plane, turned about z: a torus of
     // major radius 3. Its generatrix angle 0 points along +x; the face covers the
     // inner half of the tube (generatrix angles 90..270 degrees) for a quarter turn.
@@ -542,8 +542,8 @@ TEST(StepGeometry, RevolutionOfAnArcFindsTheCoveredArc) {
     for (const Vector2d& x : st) b.push_back(at(x.x(), x.y()));
     const StepGeometry::Surface s = g.surface(8, b);
     ASSERT_TRUE(s.map.u.arc.has_value());
-    EXPECT_NEAR(s.map.u.arc->theta0(), kPi / 2 - 0.02 * kPi, 1e-9);
-    EXPECT_NEAR(s.map.u.arc->theta1(), 3 * kPi / 2 + 0.02 * kPi, 1e-9);
+    EXPECT_EQ(s.map.u.arc->theta0(), 0.0);  // the whole generatrix circle
+    EXPECT_NEAR(s.map.u.arc->theta1(), 2 * kPi, 1e-15);
     expect_on_surface(s, b, st, 1e-9);
 }
 
