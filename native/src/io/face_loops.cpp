@@ -364,6 +364,12 @@ std::string near_pole_warning(double iso) {
 
 }  // namespace
 
+double closure_tolerance(const geom::NurbsSurface& s, double resolution) {
+    constexpr double kClosedRelative = 1e-7, kClosedResolutionCap = 1e-4;
+    const double size = s.control_box().diagonal().norm();
+    return std::max(kClosedRelative * size, std::min(resolution, kClosedResolutionCap * size));
+}
+
 std::vector<NurbsCurve3d> reversed_chain(const std::vector<NurbsCurve3d>& c) {
     std::vector<NurbsCurve3d> r;
     for (auto it = c.rbegin(); it != c.rend(); ++it) r.push_back(it->reversed());

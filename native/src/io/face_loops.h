@@ -47,6 +47,12 @@ struct FaceLoopsContext {
     std::function<std::optional<geom::NurbsCurve2d>(const geom::NurbsCurve2d&)> map_to_nurbs;
 };
 
+// Distance below which a surface's boundary rows count as one (a closed direction):
+// 1e-7 of its size (above file rounding, below real gaps, as SurfaceProjector's seam
+// test), or the file's resolution (0: none) when larger, counted up to 1e-4 of the
+// size (an absurd resolution does not close a surface with a visible gap).
+double closure_tolerance(const geom::NurbsSurface& s, double resolution);
+
 // The chain run backwards: curves in reverse order, each reversed.
 std::vector<geom::NurbsCurve3d> reversed_chain(const std::vector<geom::NurbsCurve3d>& c);
 

@@ -26,12 +26,6 @@ constexpr double kPi = 3.14159265358979323846;
 // Unbounded surfaces are built this much (relative) larger than their trims'
 // extent, so trims near the edge stay strictly inside the domain.
 constexpr double kHintMargin = 0.02;
-// closure_tolerance: boundary rows within 1e-7 of the surface's size are one row
-// (above file rounding, below real gaps, as SurfaceProjector's seam test); a
-// file's resolution counts up to 1e-4 of the size (an absurd resolution does not
-// close a surface with a visible gap).
-constexpr double kClosedRelative = 1e-7;
-constexpr double kClosedResolutionCap = 1e-4;
 // A 120's sweep within this (radians) past a whole turn is a whole turn: files print
 // angles with 10 digits (OCCT's writer: -6.283185307 to 2.17e-09).
 constexpr double kTurnRounding = 1e-7;
@@ -455,8 +449,7 @@ IgesSurface IgesReader::surface(int de, const BoundaryHint* hint) {
 }
 
 double IgesReader::closure_tolerance(const geom::NurbsSurface& s) const {
-    const double size = s.control_box().diagonal().norm();
-    return std::max(kClosedRelative * size, std::min(file_.global().min_resolution, kClosedResolutionCap * size));
+    return io::closure_tolerance(s, file_.global().min_resolution);
 }
 
 std::optional<geom::NurbsCurve2d> IgesReader::map_to_nurbs(const IgesSurface& s,

@@ -24,9 +24,6 @@ using Eigen::Vector3d;
 constexpr int kEdgeSamples = 16;
 // Relative distance below which an edge's two vertex points are one (a closed edge).
 constexpr double kSameVertex = 1e-9;
-// Surfaces' closed directions: boundary rows within this fraction of the surface's
-// size are one (as for IGES without a file resolution).
-constexpr double kClosedRelative = 1e-7;
 // Entity types that place parts (assemblies): this reader leaves them to OCCT.
 const char* const kAssemblyTypes[] = {"NEXT_ASSEMBLY_USAGE_OCCURRENCE", "MAPPED_ITEM",
                                       "ITEM_DEFINED_TRANSFORMATION"};
@@ -183,7 +180,7 @@ int Topology::add_face(const StepInstance& step_face) {
         face.name = name.kind == StepValue::Kind::kString ? name.text : std::string();
         face.source_entity = static_cast<int>(std::min<long long>(step_face.id, std::numeric_limits<int>::max()));
         FaceLoopsContext context;
-        context.closure_tolerance = kClosedRelative * S.nurbs.control_box().diagonal().norm();
+        context.closure_tolerance = closure_tolerance(S.nurbs, 0.0);
         build_face_loops(S.nurbs, context, hint, loops, false, first_is_outer, face);
         if (first_is_outer) {
             settle_outer_loop(face, "bound");
