@@ -689,7 +689,9 @@ public:
                 case Curve::Kind::kBounded: break;
             }
             const NurbsCurve3d& n = c.nurbs;
-            const auto [a, b] = n.domain();
+            // Plain variables, not a structured binding: the lambda below captures them
+            // (C++17 does not let lambdas capture bindings; clang refuses).
+            const double a = n.domain().first, b = n.domain().second;
             const double eps = geom::kKnotTolerance * (b - a);
             const bool closed = (n.evaluate(a) - n.evaluate(b)).norm() <= tol;
             auto sub = [&](double x, double y) {
@@ -916,7 +918,8 @@ public:
         const std::vector<double> grid = g.kind == Curve::Kind::kLine ? std::vector<double>{} : g.grid();
         std::vector<double> t, theta;
         for (const Vector3d& x : boundary) {
-            const auto [h, rho] = meridian(x);
+            const std::pair<double, double> hr = meridian(x);  // named: the lambda below captures them
+            const double h = hr.first, rho = hr.second;
             // The generatrix parameter whose circle about the axis passes through x.
             double s = 0;
             if (g.kind == Curve::Kind::kLine) {
