@@ -125,9 +125,7 @@ void Topology::add_solid(const StepInstance& solid, const std::string& type) {
 void Topology::add_shell(const StepInstance& shell, const std::string& name, long long owner) {
     const bool closed = shell.record("CLOSED_SHELL") != nullptr;
     const StepRecord* r = closed ? shell.record("CLOSED_SHELL") : shell.record("OPEN_SHELL");
-    if (!r) throw UnsupportedStepEntity(file_.name() + ":" + std::to_string(shell.line) + ": #" +
-                                        std::to_string(shell.id) + ": shell of type " +
-                                        (shell.records.empty() ? std::string("?") : shell.records.front().type));
+    if (!r) unsupported_step_entity(file_, shell, "a shell of this kind");
     const StepValue& faces = param(shell, *r, 1, "faces");
     if (faces.kind != StepValue::Kind::kList) fail(shell, "faces are not a list");
     geom::Body body;
@@ -149,9 +147,7 @@ int Topology::add_face(const StepInstance& step_face) {
     if (const auto found = face_index_.find(step_face.id); found != face_index_.end()) return found->second;
     const StepRecord* r = step_face.record("ADVANCED_FACE");
     if (!r) r = step_face.record("FACE_SURFACE");
-    if (!r) throw UnsupportedStepEntity(file_.name() + ":" + std::to_string(step_face.line) + ": #" +
-                                        std::to_string(step_face.id) + ": face of type " +
-                                        (step_face.records.empty() ? std::string("?") : step_face.records.front().type));
+    if (!r) unsupported_step_entity(file_, step_face, "a face of this kind");
     try {
         const StepValue& name = param(step_face, *r, 0, "name");
         const StepValue& bounds = param(step_face, *r, 1, "bounds");
@@ -211,9 +207,7 @@ std::vector<BoundarySegment> Topology::loop_segments(const StepInstance& bound, 
     const bool bound_forward = flag(bound, *r, 2, "orientation");
     if (loop.record("VERTEX_LOOP")) return {};
     const StepRecord* edge_loop = loop.record("EDGE_LOOP");
-    if (!edge_loop)
-        throw UnsupportedStepEntity(file_.name() + ":" + std::to_string(loop.line) + ": #" + std::to_string(loop.id) +
-                                    ": loop of type " + (loop.records.empty() ? std::string("?") : loop.records.front().type));
+    if (!edge_loop) unsupported_step_entity(file_, loop, "a loop of this kind");
     const StepValue& edges = param(loop, *edge_loop, 1, "edge list");
     if (edges.kind != StepValue::Kind::kList) fail(loop, "edge list is not a list");
     std::vector<BoundarySegment> segments;
@@ -294,8 +288,7 @@ geom::Model read_step_native(const std::string& text, const std::string& name, R
     monitor.check();
     for (const char* type : kAssemblyTypes)
         if (const std::vector<const StepInstance*> found = file.of_type(type); !found.empty())
-            throw UnsupportedStepEntity(name + ":" + std::to_string(found.front()->line) + ": #" +
-                                        std::to_string(found.front()->id) + ": " + type + " (an assembly)");
+            unsupported_step_entity(file, *found.front(), "an assembly");
     const StepUnits units = step_units(file);
     const StepGeometry geometry(file, units.radians_per_angle);
     geom::Model model;

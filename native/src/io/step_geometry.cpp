@@ -16,6 +16,14 @@
 namespace trimkit::io {
 namespace {
 
+// The instance's type for messages: its record's, or "(A B ...)" for a complex one.
+std::string type_of(const StepInstance& inst) {
+    if (inst.records.size() == 1) return inst.records[0].type;
+    std::string t = "(";
+    for (const StepRecord& r : inst.records) t += (t.size() > 1 ? " " : "") + r.type;
+    return t + ")";
+}
+
 // Periodic directions are built over the whole turn [0, 2pi], whatever arc the
 // boundary's points cover (`covered.full` keeps whether they go all the way round):
 // the points cannot tell which side of them the face lies (a ball whose loop is its
@@ -296,12 +304,6 @@ public:
         return *inst;
     }
     // The main type of an instance: its record's, or the complex instance's records.
-    static std::string type_of(const StepInstance& inst) {
-        if (inst.records.size() == 1) return inst.records[0].type;
-        std::string t = "(";
-        for (const StepRecord& r : inst.records) t += (t.size() > 1 ? " " : "") + r.type;
-        return t + ")";
-    }
     // The parameters of a simple instance of `type` without its name, `count` of them.
     Params simple(const StepInstance& inst, std::size_t count) const {
         const StepRecord& r = inst.records.front();
@@ -459,8 +461,7 @@ public:
     }
 
     [[noreturn]] void unsupported(const StepInstance& inst, const std::string& why) const {
-        throw UnsupportedStepEntity(file_.name() + ":" + std::to_string(inst.line) + ": #" +
-                                    std::to_string(inst.id) + " " + type_of(inst) + ": " + why);
+        unsupported_step_entity(file_, inst, why);
     }
 
     static Curve bounded(NurbsCurve3d n) {
@@ -1095,6 +1096,11 @@ NurbsCurve3d StepGeometry::edge_curve(long long curve_id, const Vector3d& start,
 StepGeometry::Surface StepGeometry::surface(long long id, const std::vector<Vector3d>& boundary) const {
     const Translator t(file_, angle_factor_);
     return t.surface(t.top(id), boundary, 0);
+}
+
+void unsupported_step_entity(const StepPart21& file, const StepInstance& at, const std::string& why) {
+    throw UnsupportedStepEntity(file.name() + ":" + std::to_string(at.line) + ": #" + std::to_string(at.id) + " " +
+                                type_of(at) + ": " + why);
 }
 
 }  // namespace trimkit::io

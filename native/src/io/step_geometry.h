@@ -27,6 +27,10 @@ struct UnsupportedStepEntity : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Throws UnsupportedStepEntity "FILE:LINE: #ID TYPE: why" for the instance `at` (TYPE:
+// its record's type, or "(A B ...)" for a complex instance).
+[[noreturn]] void unsupported_step_entity(const StepPart21& file, const StepInstance& at, const std::string& why);
+
 // References followed from one entity (a TRIMMED_CURVE's basis, a SURFACE_CURVE's
 // curve_3d, an OFFSET_SURFACE's basis, ...) nest at most this deep; deeper means a
 // reference cycle in a broken file.

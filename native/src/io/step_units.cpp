@@ -71,28 +71,24 @@ std::string length_name(double metres) {
     return "unit of " + std::to_string(metres) + " m";
 }
 
-[[noreturn]] void unsupported(const StepPart21& file, const StepInstance& at, const std::string& what) {
-    throw UnsupportedStepEntity(file.name() + ":" + std::to_string(at.line) + ": #" + std::to_string(at.id) + ": " + what);
-}
-
 }  // namespace
 
 StepUnits step_units(const StepPart21& file) {
     std::optional<double> length, angle;
     for (const StepInstance* context : file.of_type("GLOBAL_UNIT_ASSIGNED_CONTEXT")) {
         const StepValue* units = param(context->record("GLOBAL_UNIT_ASSIGNED_CONTEXT"), 0);
-        if (!units || units->kind != StepValue::Kind::kList) unsupported(file, *context, "units are not a list");
+        if (!units || units->kind != StepValue::Kind::kList) unsupported_step_entity(file, *context, "units are not a list");
         for (const StepValue& u : units->items) {
             if (u.kind != StepValue::Kind::kReference) continue;
             const StepInstance* unit = file.find(u.integer);
-            if (!unit) unsupported(file, *context, "unit #" + std::to_string(u.integer) + " is not defined");
+            if (!unit) unsupported_step_entity(file, *context, "unit #" + std::to_string(u.integer) + " is not defined");
             const bool is_length = unit->record("LENGTH_UNIT") != nullptr;
             const bool is_angle = unit->record("PLANE_ANGLE_UNIT") != nullptr;
             if (!is_length && !is_angle) continue;
             const std::optional<double> size = unit_size(file, u.integer, 0);
-            if (!size) unsupported(file, *unit, "a unit this reader does not understand");
+            if (!size) unsupported_step_entity(file, *unit, "a unit this reader does not understand");
             std::optional<double>& slot = is_length ? length : angle;
-            if (slot && !same(*slot, *size)) unsupported(file, *unit, "representation contexts with different units");
+            if (slot && !same(*slot, *size)) unsupported_step_entity(file, *unit, "representation contexts with different units");
             slot = size;
         }
     }
