@@ -1,5 +1,5 @@
 // A face's trim loops from its boundary as a file gives it, for the readers of B-rep
-// files (IGES now; STEP's own reader next): each boundary segment has model-space
+// files (IGES, STEP's own reader): each boundary segment has model-space
 // curves and/or parameter-space curves. The loops end up in the NURBS surface's (u,v)
 // domain: parameter curves mapped from the surface's native parameters when the file
 // has them and they agree with the model-space curve, else the model-space curve

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <unordered_map>
 
 #include "geom/error.h"
@@ -53,14 +54,23 @@ private:
 
     void add_shell(const StepInstance& shell, const std::string& name, long long owner);
     int add_face(const StepInstance& face);
-    std::vector<BoundarySegment> loop_segments(const StepInstance& bound, BoundaryHint& hint);
+    std::vector<BoundarySegment> loop_segments(const StepInstance& bound, long long surface, BoundaryHint& hint);
+    void add_pcurve(bool oriented_forward, bool forward, long long surface, BoundarySegment& s) const;
     int edge(const StepInstance& edge_curve);
+
+    // What an edge's PCURVEs need: its EDGE_CURVE's edge_geometry and the range of
+    // that curve's parameter the edge uses (StepGeometry::EdgeRange), by Model::edges index.
+    struct EdgeSource {
+        long long curve = 0;
+        StepGeometry::EdgeRange range;
+    };
 
     const StepPart21& file_;
     const StepGeometry& geometry_;
     geom::Model& model_;
     ReadMonitor& monitor_;
     std::unordered_map<long long, int> edge_index_;
+    std::vector<EdgeSource> edge_sources_;
     std::unordered_map<long long, int> face_index_;
     std::multimap<long long, int> body_index_;
     int face_number_ = 0;
@@ -152,13 +162,15 @@ int Topology::add_face(const StepInstance& step_face) {
         const StepValue& name = param(step_face, *r, 0, "name");
         const StepValue& bounds = param(step_face, *r, 1, "bounds");
         if (bounds.kind != StepValue::Kind::kList) fail(step_face, "bounds are not a list");
+        const StepValue& surface_ref = param(step_face, *r, 2, "face geometry");
+        if (surface_ref.kind != StepValue::Kind::kReference) fail(step_face, "face geometry is not a reference");
         std::vector<std::vector<BoundarySegment>> loops;
         BoundaryHint hint;
         bool first_is_outer = false;
         for (const StepValue& b : bounds.items) {
             const StepInstance& bound = instance(step_face, b, "bound");
             const bool outer = bound.record("FACE_OUTER_BOUND") != nullptr;
-            std::vector<BoundarySegment> segments = loop_segments(bound, hint);
+            std::vector<BoundarySegment> segments = loop_segments(bound, surface_ref.integer, hint);
             if (segments.empty()) continue;  // a VERTEX_LOOP: a pole, which the loops need not name
             if (outer && !first_is_outer) {
                 loops.insert(loops.begin(), std::move(segments));
@@ -167,8 +179,6 @@ int Topology::add_face(const StepInstance& step_face) {
                 loops.push_back(std::move(segments));
             }
         }
-        const StepValue& surface_ref = param(step_face, *r, 2, "face geometry");
-        if (surface_ref.kind != StepValue::Kind::kReference) fail(step_face, "face geometry is not a reference");
         const StepGeometry::Surface S = geometry_.surface(surface_ref.integer, hint);
         geom::Face face;
         face.surface_kind = S.kind;
@@ -177,6 +187,7 @@ int Topology::add_face(const StepInstance& step_face) {
         face.source_entity = static_cast<int>(std::min<long long>(step_face.id, std::numeric_limits<int>::max()));
         FaceLoopsContext context;
         context.closure_tolerance = closure_tolerance(S.nurbs, 0.0);
+        context.map_to_nurbs = [this, &S](const geom::NurbsCurve2d& c) { return geometry_.map_pcurve(S, c); };
         build_face_loops(S.nurbs, context, hint, loops, false, first_is_outer, face);
         if (first_is_outer) {
             settle_outer_loop(face, "bound");
@@ -198,9 +209,13 @@ int Topology::add_face(const StepInstance& step_face) {
     return -1;
 }
 
-// The segments of one FACE_BOUND / FACE_OUTER_BOUND, in the order the face runs
-// them; their sample points added to `hint`.
-std::vector<BoundarySegment> Topology::loop_segments(const StepInstance& bound, BoundaryHint& hint) {
+// The segments of one FACE_BOUND / FACE_OUTER_BOUND of a face on the surface
+// instance `surface`, in the order the face runs them, each with its edge's 3D curve
+// and, where the file gives one on that surface, its PCURVE (face_loops checks the
+// PCURVE against the 3D curve and projects that instead when they disagree); their
+// sample points added to `hint`.
+std::vector<BoundarySegment> Topology::loop_segments(const StepInstance& bound, long long surface,
+                                                     BoundaryHint& hint) {
     const StepRecord* r = bound.record("FACE_OUTER_BOUND");
     if (!r) r = &record(bound, "FACE_BOUND");
     const StepInstance& loop = instance(bound, param(bound, *r, 1, "loop"), "loop");
@@ -215,18 +230,31 @@ std::vector<BoundarySegment> Topology::loop_segments(const StepInstance& bound, 
         const StepInstance& oriented = instance(loop, e, "oriented edge");
         const StepRecord& o = record(oriented, "ORIENTED_EDGE");
         const StepInstance& edge_curve = instance(oriented, param(oriented, o, 3, "edge element"), "edge element");
-        const bool forward = flag(oriented, o, 4, "orientation") == bound_forward;
+        const bool oriented_forward = flag(oriented, o, 4, "orientation");
+        const bool forward = oriented_forward == bound_forward;
         BoundarySegment s;
         s.edge = edge(edge_curve);
         s.edge_reversed = !forward;
         const geom::NurbsCurve3d& c = *model_.edges[s.edge].curve;
         s.model = {forward ? c : c.reversed()};
+        add_pcurve(oriented_forward, forward, surface, s);
         const auto [t0, t1] = c.domain();
         for (int k = 0; k <= kEdgeSamples; ++k) hint.push_back(c.evaluate(t0 + (t1 - t0) * k / kEdgeSamples));
         segments.push_back(std::move(s));
     }
     if (!bound_forward) std::reverse(segments.begin(), segments.end());
     return segments;
+}
+
+// s.param: the PCURVE of s.edge on the surface instance `surface` (of a SEAM_CURVE's
+// two, the first for an ORIENTED_EDGE along the edge, else the second; face_loops
+// shifts a loop's curves by whole periods to continue each other), oriented as
+// s.model; none when the file has none there or it cannot be read.
+void Topology::add_pcurve(bool oriented_forward, bool forward, long long surface, BoundarySegment& s) const {
+    const EdgeSource& source = edge_sources_[static_cast<std::size_t>(s.edge)];
+    std::optional<geom::NurbsCurve2d> pc =
+        geometry_.edge_pcurve(source.curve, surface, source.range, oriented_forward);
+    if (pc) s.param = {forward ? std::move(*pc) : pc->reversed()};
 }
 
 // The Model::edges index of an EDGE_CURVE, its curve running from its start vertex
@@ -246,10 +274,14 @@ int Topology::edge(const StepInstance& edge_curve) {
     if (curve.kind != StepValue::Kind::kReference) fail(edge_curve, "edge geometry is not a reference");
     const double tol = kSameVertex * (1.0 + start.norm() + end.norm());
     geom::Edge e;
-    e.curve = geometry_.edge_curve(curve.integer, start, end, flag(edge_curve, r, 4, "same sense"), tol);
+    EdgeSource source;
+    source.curve = curve.integer;
+    e.curve = geometry_.edge_curve(curve.integer, start, end, flag(edge_curve, r, 4, "same sense"), tol,
+                                   &source.range);
     e.start = start;
     e.end = end;
     model_.edges.push_back(std::move(e));
+    edge_sources_.push_back(source);
     return edge_index_[edge_curve.id] = static_cast<int>(model_.edges.size()) - 1;
 }
 

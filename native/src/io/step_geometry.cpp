@@ -37,9 +37,12 @@ AngularExtent whole_turn(const AngularExtent& covered) {
     return turn;
 }
 
+using Eigen::Vector2d;
 using Eigen::Vector3d;
+using geom::NurbsCurve2d;
 using geom::NurbsCurve3d;
 using geom::NurbsSurface;
+using EdgeRange = StepGeometry::EdgeRange;
 using Surface = StepGeometry::Surface;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -60,6 +63,12 @@ constexpr int kMaxSamples = 4096;
 // distances without a derivative (0.618^60 ≈ 3e-13 of the bracket).
 constexpr int kNewtonSteps = 30;
 constexpr int kGoldenSteps = 60;
+// An edge's parameter range may pass a bounded PCURVE's domain by this share of it
+// (the 3D and 2D curves' ends, rounded separately by the writer); it is clamped.
+constexpr double kPcurveRangeSlack = 1e-6;
+// A shift by whole turns leaves angles this share of a turn below the arc's start
+// where they are (file rounding, not another turn).
+constexpr double kTurnSlack = 1e-9;
 
 // ---- Entity parameters --------------------------------------------------------------
 
@@ -660,16 +669,19 @@ public:
     // ---- edges ----
 
     NurbsCurve3d edge_curve(const StepInstance& inst, const Vector3d& start, const Vector3d& end, bool same_sense,
-                            double tol) const {
+                            double tol, EdgeRange* range) const {
         const Curve c = curve(inst, 0);
         const Params p(file_, inst, type_of(inst), {});
         const bool coincide = (start - end).norm() <= tol;
+        EdgeRange unused;
+        EdgeRange& r = range ? *range : unused;
         try {
             switch (c.kind) {
                 case Curve::Kind::kLine: {
                     if (coincide) p.fail("the edge's vertices coincide; a line has no closed piece");
                     const double ts = nearest_parameter(c, start), te = nearest_parameter(c, end);
                     if (ts == te) p.fail("the edge's vertices project to one point of the line");
+                    r = {ts, te, 0.0};
                     return ts < te ? geom::line_segment(c.at(ts), c.at(te), ts, te)
                                    : geom::line_segment(c.at(ts), c.at(te), -ts, -te);
                 }
@@ -684,42 +696,124 @@ public:
                         if (sweep <= geom::kAngleSlack) sweep = kTwoPi;
                     }
                     const double t1 = same_sense ? ts + sweep : ts - (coincide ? kTwoPi : kTwoPi - sweep);
+                    // Part 42 4.4.x: a conic's parameter is its angle in the file's unit.
+                    r = {ts / angle_factor_, t1 / angle_factor_, kTwoPi / angle_factor_};
                     return c.kind == Curve::Kind::kCircle ? geom::circular_arc(c.O, c.X, c.Y, c.a, ts, t1)
                                                           : geom::ellipse_arc(c.O, c.X, c.Y, c.a, c.b, ts, t1);
                 }
                 case Curve::Kind::kBounded: break;
             }
-            const NurbsCurve3d& n = c.nurbs;
-            // Plain variables, not a structured binding: the lambda below captures them
-            // (C++17 does not let lambdas capture bindings; clang refuses).
-            const double a = n.domain().first, b = n.domain().second;
-            const double eps = geom::kKnotTolerance * (b - a);
-            const bool closed = (n.evaluate(a) - n.evaluate(b)).norm() <= tol;
-            auto sub = [&](double x, double y) {
-                if (x <= a + eps && y >= b - eps) return n;
-                return n.sub_curve(std::max(x, a), std::min(y, b));
-            };
-            const double ts = nearest_parameter(c, start);
-            if (coincide) {
-                if (!closed) p.fail("the edge's vertices coincide but the curve is open");
-                const NurbsCurve3d whole =
-                    ts <= a + eps || ts >= b - eps ? n : joined(sub(ts, b), sub(a, ts));
-                return same_sense ? whole : whole.reversed();
-            }
-            const double te = nearest_parameter(c, end);
-            // The piece following the curve from parameter x to y.
-            auto forward = [&](double x, double y) -> NurbsCurve3d {
-                if (closed && x >= b - eps) x = a;
-                if (closed && y <= a + eps) y = b;
-                if (y > x + eps) return sub(x, y);
-                if (closed) return joined(sub(x, b), sub(a, y));
-                if (x > y + eps) return sub(y, x).reversed();  // against same_sense: cut anyway
-                p.fail("the edge's vertices meet the open curve at one point");
-            };
-            return same_sense ? forward(ts, te) : forward(te, ts).reversed();
+            return bounded_edge(c, p, start, end, same_sense, tol, r);
         } catch (const geom::InvalidInput& e) {
             p.fail(e.what());
         }
+    }
+
+    // edge_curve's piece of a bounded curve c (B-spline, polyline), its range in r.
+    static NurbsCurve3d bounded_edge(const Curve& c, const Params& p, const Vector3d& start, const Vector3d& end,
+                                     bool same_sense, double tol, EdgeRange& r) {
+        const NurbsCurve3d& n = c.nurbs;
+        // Plain variables, not a structured binding: the lambdas below capture them
+        // (C++17 does not let lambdas capture bindings; clang refuses).
+        const double a = n.domain().first, b = n.domain().second;
+        const double eps = geom::kKnotTolerance * (b - a);
+        const bool closed = (n.evaluate(a) - n.evaluate(b)).norm() <= tol;
+        auto sub = [&](double x, double y) {
+            if (x <= a + eps && y >= b - eps) return n;
+            return n.sub_curve(std::max(x, a), std::min(y, b));
+        };
+        const double ts = nearest_parameter(c, start);
+        if ((start - end).norm() <= tol) {
+            if (!closed) p.fail("the edge's vertices coincide but the curve is open");
+            const bool at_end = ts <= a + eps || ts >= b - eps;
+            r = at_end ? EdgeRange{a, b, b - a} : EdgeRange{ts, ts + (b - a), b - a};
+            if (!same_sense) std::swap(r.start, r.end);
+            const NurbsCurve3d whole = at_end ? n : joined(sub(ts, b), sub(a, ts));
+            return same_sense ? whole : whole.reversed();
+        }
+        const double te = nearest_parameter(c, end);
+        // The parameters the piece from x to y runs between (forward below).
+        auto span = [&](double x, double y) {
+            if (closed && x >= b - eps) x = a;
+            if (closed && y <= a + eps) y = b;
+            if (closed && y <= x + eps) y += b - a;  // across the curve's ends
+            return EdgeRange{x, y, closed ? b - a : 0.0};
+        };
+        // The piece following the curve from parameter x to y.
+        auto forward = [&](double x, double y) -> NurbsCurve3d {
+            if (closed && x >= b - eps) x = a;
+            if (closed && y <= a + eps) y = b;
+            if (y > x + eps) return sub(x, y);
+            if (closed) return joined(sub(x, b), sub(a, y));
+            if (x > y + eps) return sub(y, x).reversed();  // against same_sense: cut anyway
+            p.fail("the edge's vertices meet the open curve at one point");
+        };
+        r = same_sense ? span(ts, te) : span(te, ts);
+        if (!same_sense) std::swap(r.start, r.end);
+        return same_sense ? forward(ts, te) : forward(te, ts).reversed();
+    }
+
+    // ---- parameter-space curves ----
+
+    // edge_pcurve without the catch: throws for a malformed entity.
+    std::optional<NurbsCurve2d> edge_pcurve(const StepInstance& geometry, long long surface_id,
+                                            const EdgeRange& range, bool first_of_seam) const {
+        const std::string type = type_of(geometry);
+        if (type != "SURFACE_CURVE" && type != "SEAM_CURVE") return std::nullopt;
+        const Params p = simple(geometry, 3);
+        // associated_geometry: PCURVEs or SURFACEs (pcurve_or_surface); only PCURVEs here.
+        std::vector<const StepInstance*> on_surface;
+        for (const StepValue& v : p.list(1, "associated_geometry")) {
+            const StepInstance* pc = v.kind == StepValue::Kind::kReference ? file_.find(v.integer) : nullptr;
+            if (!pc || type_of(*pc) != "PCURVE") continue;
+            if (simple(*pc, 2).reference(0, "basis_surface") == surface_id) on_surface.push_back(pc);
+        }
+        if (on_surface.empty()) return std::nullopt;
+        const Params pc = simple(*on_surface[!first_of_seam && on_surface.size() > 1 ? 1 : 0], 2);
+        const Params rep = simple(referred(pc, 1, "reference_to_curve", {"DEFINITIONAL_REPRESENTATION"}), 2);
+        const std::vector<StepValue>& items = rep.list(0, "items");
+        if (items.empty()) return std::nullopt;
+        const StepInstance* item = file_.find(rep.reference_of(items[0], "item"));
+        if (!item) return std::nullopt;
+        return plane_piece(curve(*item, 0), range);
+    }
+
+    // The piece of a curve in the plane z = 0 between the parameters of `range` (in the
+    // file's units), running from range.start to range.end, as a 2D curve; nullopt when
+    // the curve leaves z = 0 or a bounded curve does not cover the range.
+    std::optional<NurbsCurve2d> plane_piece(const Curve& c, const EdgeRange& range) const {
+        double lo = std::min(range.start, range.end), hi = std::max(range.start, range.end);
+        if (!(hi > lo)) return std::nullopt;
+        NurbsCurve3d n;
+        if (c.kind == Curve::Kind::kLine) {
+            n = geom::line_segment(c.at(lo), c.at(hi), lo, hi);
+        } else if (c.conic()) {
+            // Part 42 4.4.x: a conic's parameter is its angle in the file's unit.
+            const double t0 = lo * angle_factor_, t1 = hi * angle_factor_;
+            n = c.kind == Curve::Kind::kCircle ? geom::circular_arc(c.O, c.X, c.Y, c.a, t0, t1)
+                                               : geom::ellipse_arc(c.O, c.X, c.Y, c.a, c.b, t0, t1);
+        } else {
+            const double a = c.nurbs.domain().first, b = c.nurbs.domain().second;
+            const double eps = kPcurveRangeSlack * (b - a);
+            if (range.period > 0) {
+                const double k = std::ceil((a - eps - lo) / range.period);
+                lo += k * range.period;
+                hi += k * range.period;
+            }
+            if (lo < a - eps || hi > b + eps) return std::nullopt;
+            lo = std::max(lo, a);
+            hi = std::min(hi, b);
+            // sub_curve also clamps an unclamped knot vector (a periodic curve's).
+            const bool whole = lo <= a + geom::kKnotTolerance * (b - a) && hi >= b - geom::kKnotTolerance * (b - a);
+            n = whole && geom::is_clamped(c.nurbs.knots(), c.nurbs.degree()) ? c.nurbs : c.nurbs.sub_curve(lo, hi);
+        }
+        std::vector<Vector2d> P;
+        for (const Vector3d& x : n.points()) {
+            if (x.z() != 0.0) return std::nullopt;  // 2D points and placements give z = 0 exactly
+            P.emplace_back(x.x(), x.y());
+        }
+        NurbsCurve2d out(n.degree(), n.knots(), std::move(P), n.is_rational() ? n.weights() : std::vector<double>{});
+        return range.end < range.start ? out.reversed() : out;
     }
 
     // ---- surfaces ----
@@ -1088,9 +1182,69 @@ Eigen::Affine3d StepGeometry::placement(long long id) const {
 }
 
 NurbsCurve3d StepGeometry::edge_curve(long long curve_id, const Vector3d& start, const Vector3d& end,
-                                      bool same_sense, double tol) const {
+                                      bool same_sense, double tol, EdgeRange* range) const {
     const Translator t(file_, angle_factor_);
-    return t.edge_curve(t.top(curve_id), start, end, same_sense, tol);
+    return t.edge_curve(t.top(curve_id), start, end, same_sense, tol, range);
+}
+
+std::optional<NurbsCurve2d> StepGeometry::edge_pcurve(long long curve_id, long long surface_id,
+                                                      const EdgeRange& range, bool first_of_seam) const {
+    const StepInstance* geometry = file_.find(curve_id);
+    if (!geometry) return std::nullopt;
+    try {
+        return Translator(file_, angle_factor_).edge_pcurve(*geometry, surface_id, range, first_of_seam);
+    } catch (const std::runtime_error&) {  // ReadError, UnsupportedStepEntity, NumericalFailure
+    } catch (const std::logic_error&) {    // InvalidInput, out_of_range
+    }
+    return std::nullopt;
+}
+
+namespace {
+
+// Moves the angle coordinate d of P by whole turns into the arc's turn. A whole-turn
+// arc [θ0, θ1]: only a curve starting below θ0 or past θ1 moves, to start within it
+// (AxisMap::period continues it past θ1); one on θ1 stays there, on the seam side the
+// file put it (a seam's two PCURVEs at θ0 and θ1). Another arc: the turn whose middle
+// is nearest the arc's. Angles in the axis's source units (before scale and offset).
+void into_turn(std::vector<Vector2d>& P, int d, const geom::AxisMap& axis) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Vector2d& x : P) {
+        lo = std::min(lo, axis.scale * x[d] + axis.offset);
+        hi = std::max(hi, axis.scale * x[d] + axis.offset);
+    }
+    const double t0 = std::min(axis.arc->theta0(), axis.arc->theta1());
+    const double t1 = std::max(axis.arc->theta0(), axis.arc->theta1());
+    const double slack = kTurnSlack * kTwoPi;
+    double k = 0;
+    if (axis.period <= 0) k = std::round((0.5 * (t0 + t1) - 0.5 * (lo + hi)) / kTwoPi);
+    else if (lo < t0 - slack) k = std::ceil((t0 - slack - lo) / kTwoPi);
+    else if (lo > t1 + slack) k = -std::floor((lo - t0 + slack) / kTwoPi);
+    if (k == 0 || !std::isfinite(k)) return;
+    for (Vector2d& x : P) x[d] += k * kTwoPi / axis.scale;
+}
+
+}  // namespace
+
+std::optional<NurbsCurve2d> StepGeometry::map_pcurve(const Surface& S, const NurbsCurve2d& c) const {
+    geom::ParameterMap map = S.map;
+    std::vector<Vector2d> P = c.points();
+    for (int d = 0; d < 2; ++d) {
+        geom::AxisMap& axis = (d == 0) != map.swap ? map.u : map.v;  // swap: s maps to v
+        if (!axis.arc || axis.scale == 0) continue;
+        for (Vector2d& x : P) x[d] *= angle_factor_;  // plane angles in the file's unit
+        if (std::fabs(axis.arc->theta1() - axis.arc->theta0()) >= kTwoPi - geom::kAngleSlack) axis.period = kTwoPi;
+        into_turn(P, d, axis);
+    }
+    try {
+        const NurbsCurve2d radians(c.degree(), c.knots(), std::move(P),
+                                   c.is_rational() ? c.weights() : std::vector<double>{});
+        const auto [u0, u1] = S.nurbs.domain_u();
+        const auto [v0, v1] = S.nurbs.domain_v();
+        return map.map_curve(radians, kPcurveRefitShare * std::max(u1 - u0, v1 - v0));
+    } catch (const std::runtime_error&) {
+    } catch (const std::logic_error&) {
+    }
+    return std::nullopt;
 }
 
 StepGeometry::Surface StepGeometry::surface(long long id, const std::vector<Vector3d>& boundary) const {

@@ -8,6 +8,7 @@
 // (edge vertices, boundary samples) that locate pieces of unbounded curves and surfaces.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,6 +42,10 @@ constexpr int kMaxStepGeometryNesting = 32;
 // and curved edges bulging between the samples are still covered.
 constexpr double kStepBoundaryMargin = 0.02;
 
+// A PCURVE mapped into a surface's NURBS (u, v) through a non-affine map is refitted
+// within this share of the NURBS domain's larger side (as the OCCT reader's p-curves).
+constexpr double kPcurveRefitShare = 1e-7;
+
 // Holds no state beyond the file: its const methods may run on several threads.
 class StepGeometry {
 public:
@@ -67,6 +72,17 @@ public:
 
     // ---- Curves ----------------------------------------------------------------
 
+    // The parameter range of a curve that an edge uses, in the curve's own STEP
+    // parameter as the file writes it (a conic's angle in the file's plane-angle
+    // unit; a TRIMMED_CURVE's, SURFACE_CURVE's or SEAM_CURVE's that of its basis or
+    // curve_3d): `start` at the edge's start vertex, `end` at its end vertex (end <
+    // start when the edge runs against the curve). `period` > 0 for a closed curve
+    // (its period; the range may run past the curve's end by less than one), else 0.
+    // A SURFACE_CURVE's PCURVEs share this parameter (ISO 10303-42 4.4.x surface_curve).
+    struct EdgeRange {
+        double start = 0, end = 0, period = 0;
+    };
+
     // The piece of curve `curve_id` that an EDGE_CURVE with vertex points `start` and
     // `end` and flag `same_sense` uses, returned running from start to end:
     //  - same_sense: the piece that follows the curve's own direction from start to end;
@@ -89,8 +105,24 @@ public:
     // (its basis curve: the vertices choose the piece), SURFACE_CURVE, SEAM_CURVE,
     // INTERSECTION_CURVE (their curve_3d). UnsupportedStepEntity: PCURVE (not a 3D
     // curve), OFFSET_CURVE_3D, COMPOSITE_CURVE, HYPERBOLA, PARABOLA and other curves.
+    // `range`, when given, receives the parameter range of the piece (EdgeRange).
     geom::NurbsCurve3d edge_curve(long long curve_id, const Eigen::Vector3d& start,
-                                  const Eigen::Vector3d& end, bool same_sense, double tol) const;
+                                  const Eigen::Vector3d& end, bool same_sense, double tol,
+                                  EdgeRange* range = nullptr) const;
+
+    // The parameter-space curve of an edge on a surface: the PCURVE among the
+    // associated_geometry of the SURFACE_CURVE or SEAM_CURVE `curve_id` whose
+    // basis_surface is the instance `surface_id` (a SEAM_CURVE has two on it: the
+    // first when `first_of_seam`, else the second), its DEFINITIONAL_REPRESENTATION's
+    // first item cut to `range` and running from range.start to range.end, in the
+    // surface's STEP parameters (s, t) as the file writes them (angles in its unit).
+    // 2D kinds: those of edge_curve with 2D points and placements (LINE, CIRCLE,
+    // ELLIPSE, POLYLINE, the B-spline and Bezier curves, rational too, TRIMMED_CURVE:
+    // its basis). nullopt, never an exception, for anything else: no such PCURVE, a
+    // kind not translated, a bounded 2D curve not covering the range (shifted by whole
+    // periods of a closed edge curve), a malformed entity. The caller projects instead.
+    std::optional<geom::NurbsCurve2d> edge_pcurve(long long curve_id, long long surface_id,
+                                                  const EdgeRange& range, bool first_of_seam) const;
 
     // ---- Surfaces --------------------------------------------------------------
 
@@ -136,6 +168,13 @@ public:
     //  - RECTANGULAR_TRIMMED_SURFACE: its basis surface sized by the boundary.
     // An unbounded surface with an empty boundary is a ReadError.
     Surface surface(long long id, const std::vector<Eigen::Vector3d>& boundary) const;
+
+    // A curve in the STEP parameters (s, t) of `S` (an edge_pcurve) mapped into
+    // S.nurbs's (u, v): the angular parameters (those whose axis map has an arc)
+    // converted to radians and moved by whole turns to start in the arc's turn (past
+    // its end a whole-turn arc continues periodically), then S.map.map_curve within
+    // kPcurveRefitShare. nullopt when the map fails (never an exception).
+    std::optional<geom::NurbsCurve2d> map_pcurve(const Surface& S, const geom::NurbsCurve2d& c) const;
 
 private:
     const StepPart21& file_;

@@ -145,6 +145,15 @@ Eigen::AlignedBox2d loop_box(const geom::Loop& loop) {
     return box;
 }
 
+// Box of the loop's control points: holds the whole loop (convex hull property),
+// where loop_box's samples may miss a curve's extremes.
+Eigen::AlignedBox2d control_box(const geom::Loop& loop) {
+    Eigen::AlignedBox2d box;
+    for (const geom::Coedge& e : loop.coedges)
+        for (const Eigen::Vector2d& p : e.curve.points()) box.extend(p);
+    return box;
+}
+
 }  // namespace
 
 std::size_t enclosing_loop(const std::vector<geom::Loop>& loops, std::size_t declared) {
@@ -154,7 +163,9 @@ std::size_t enclosing_loop(const std::vector<geom::Loop>& loops, std::size_t dec
     double best_area = std::fabs(signed_area(loops[declared]));
     for (std::size_t i = 0; i < loops.size(); ++i) {
         const double area = std::fabs(signed_area(loops[i]));
-        if (i != declared && area > best_area && loop_box(loops[i]).contains(inner)) {
+        // Samples of the declared loop inside the candidate's control box: loops that
+        // touch (a hole through the outer loop's vertex) still count as enclosed.
+        if (i != declared && area > best_area && control_box(loops[i]).contains(inner)) {
             best = i;
             best_area = area;
         }

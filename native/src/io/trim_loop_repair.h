@@ -29,7 +29,8 @@ bool close_loop(geom::Loop& loop, const geom::NurbsSurface& surface, double mode
 double signed_area(const geom::Loop& loop);
 
 // The loop that encloses the others: the one of largest |signed_area| whose (u,v)
-// box contains the box of loop `declared` (the file's outer loop), else `declared`.
+// control-point box contains the sampled box of loop `declared` (the file's outer
+// loop; loops touching it still count), else `declared`.
 // Some writers flag a hole as the outer loop (UKI60998.igs lists a circular hole
 // first; OCCT's IGES B-rep writer flags a hole of a cylinder whose seam runs through
 // another hole); two loops side by side (bands of a closed surface) keep the flag.

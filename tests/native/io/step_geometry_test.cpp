@@ -9,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -695,6 +696,145 @@ TEST(StepGeometry, ScrewSurfacesAndEdgesTranslate) {
     }
     EXPECT_GT(faces, 0);
     EXPECT_TRUE(kinds.count("torus") && kinds.count("cone") && kinds.count("cylinder")) << kinds.size();
+}
+
+// ---- PCURVEs (ISO 10303-42 4.4.x surface_curve: the 2D curve shares curve_3d's parameter) ----
+
+// A 2D context for DEFINITIONAL_REPRESENTATIONs (the reader does not look into it).
+const std::string kContext2d =
+    "#99=(GEOMETRIC_REPRESENTATION_CONTEXT(2) PARAMETRIC_REPRESENTATION_CONTEXT() "
+    "REPRESENTATION_CONTEXT('2D SPACE',''));\n";
+
+// A PCURVE #id on surface #surface whose representation #(id+1) holds the 2D curve #item.
+std::string pcurve(int id, int surface, int item) {
+    const std::string n = std::to_string(id), r = std::to_string(id + 1);
+    return "#" + n + "=PCURVE('',#" + std::to_string(surface) + ",#" + r + ");\n#" + r +
+           "=DEFINITIONAL_REPRESENTATION('',(#" + std::to_string(item) + "),#99);\n";
+}
+
+// A 2D LINE #id through (x, y) along (dx, dy) with speed 1 (#id+1..#id+3 its parts).
+std::string line2d(int id, const std::string& xy, const std::string& d) {
+    const std::string n = std::to_string(id), p = std::to_string(id + 1), v = std::to_string(id + 2),
+                      dir = std::to_string(id + 3);
+    return "#" + n + "=LINE('',#" + p + ",#" + v + ");\n#" + p + "=CARTESIAN_POINT('',(" + xy + "));\n#" + v +
+           "=VECTOR('',#" + dir + ",1.);\n#" + dir + "=DIRECTION('',(" + d + "));\n";
+}
+
+// The circle #1 about (1,2,3) (radius 2) on the cylinder #5 of the same frame, as a
+// SURFACE_CURVE #50 whose PCURVE #51 on #5 is the line v = 0, u = t (angles in degrees).
+const std::string kCircleOnCylinder = kCircle + kContext2d + "#5=CYLINDRICAL_SURFACE('',#10,2.);\n" +
+                                      "#50=SURFACE_CURVE('',#1,(#51),.PCURVE_S1.);\n" + pcurve(51, 5, 60) +
+                                      line2d(60, "0.,0.", "1.,0.");
+
+TEST(StepGeometry, PcurveOfACircleOnACylinderFollowsTheEdgeInDegrees) {
+    const Parsed parsed(kCircleOnCylinder, kPi / 180);
+    const StepGeometry& g = parsed.g;
+    const Vector3d a(3, 2, 3), b(1, 4, 3);  // angles 0 and 90 degrees
+    const StepGeometry::Surface S = g.surface(5, arc_points(2, 0, 0, 2 * kPi, 16, Vector3d(1, 2, 3)));
+    for (bool same_sense : {true, false}) {
+        StepGeometry::EdgeRange range;
+        g.edge_curve(50, a, b, same_sense, 1e-9, &range);
+        // The circle's parameter in the file's unit: 0 to 90 degrees, or down to -270.
+        EXPECT_NEAR(range.start, 0, 1e-12);
+        EXPECT_NEAR(range.end, same_sense ? 90 : -270, 1e-12);
+        EXPECT_NEAR(range.period, 360, 1e-12);
+        const std::optional<geom::NurbsCurve2d> pc = g.edge_pcurve(50, 5, range, true);
+        ASSERT_TRUE(pc.has_value());
+        EXPECT_LE((pc->evaluate(pc->domain().first) - Vector2d(0, 0)).norm(), 1e-12);
+        EXPECT_LE((pc->evaluate(pc->domain().second) - Vector2d(range.end, 0)).norm(), 1e-12);
+        const std::optional<geom::NurbsCurve2d> uv = g.map_pcurve(S, *pc);
+        ASSERT_TRUE(uv.has_value());
+        // On the surface: the circle from a to b, through -135 degrees when against it.
+        const double t0 = uv->domain().first, t1 = uv->domain().second;
+        auto on_surface = [&](double t) {
+            const Vector2d q = uv->evaluate(t);
+            return S.nurbs.evaluate(q.x(), q.y());
+        };
+        expect_near(on_surface(t0), a, 1e-9);
+        expect_near(on_surface(t1), b, 1e-9);
+        const double mid = (same_sense ? 45 : -135) * kPi / 180;
+        const Vector3d middle(1 + 2 * std::cos(mid), 2 + 2 * std::sin(mid), 3);
+        double nearest = 1e300;
+        for (int k = 0; k <= 64; ++k) {
+            const Vector3d x = on_surface(t0 + (t1 - t0) * k / 64);
+            EXPECT_NEAR((x - Vector3d(1, 2, 3)).norm(), 2, 1e-9);
+            nearest = std::min(nearest, (x - middle).norm());
+        }
+        EXPECT_LE(nearest, 2 * kPi * 2 / 64);  // one sample step of the longer arc
+    }
+}
+
+TEST(StepGeometry, SeamCurveTakesThePcurveTheOrientationNames) {
+    // The cylinder's seam line x = 3 (angle 0), t = height above z = 3; its two PCURVEs
+    // u = 0 and u = 2π (radians).
+    const Parsed parsed(kCircle + kContext2d + "#5=CYLINDRICAL_SURFACE('',#10,2.);\n" +
+                        "#30=LINE('',#31,#32);\n#31=CARTESIAN_POINT('',(3.,2.,3.));\n#32=VECTOR('',#11,1.);\n"
+                        "#50=SEAM_CURVE('',#30,(#51,#53),.PCURVE_S1.);\n" +
+                        pcurve(51, 5, 60) + pcurve(53, 5, 70) + line2d(60, "0.,0.", "0.,1.") +
+                        line2d(70, "6.283185307179586,0.", "0.,1."));
+    const StepGeometry& g = parsed.g;
+    StepGeometry::EdgeRange range;
+    g.edge_curve(50, Vector3d(3, 2, 4), Vector3d(3, 2, 6), true, 1e-9, &range);
+    EXPECT_NEAR(range.start, 1, 1e-12);
+    EXPECT_NEAR(range.end, 3, 1e-12);
+    EXPECT_EQ(range.period, 0.0);
+    const std::optional<geom::NurbsCurve2d> first = g.edge_pcurve(50, 5, range, true);
+    const std::optional<geom::NurbsCurve2d> second = g.edge_pcurve(50, 5, range, false);
+    ASSERT_TRUE(first && second);
+    EXPECT_LE((first->evaluate(first->domain().first) - Vector2d(0, 1)).norm(), 1e-15);
+    EXPECT_LE((first->evaluate(first->domain().second) - Vector2d(0, 3)).norm(), 1e-15);
+    EXPECT_LE((second->evaluate(second->domain().first) - Vector2d(2 * kPi, 1)).norm(), 1e-15);
+}
+
+TEST(StepGeometry, BSplinePcurveIsCutToTheEdgesRangeInItsSense) {
+    // A degree-1 B-spline from (0,0,0) to (4,0,0) on [0, 4] on the plane z = 0, its
+    // PCURVE the same segment in (u, v).
+    const Parsed parsed(frame("0.,0.,0.") + kContext2d + "#5=PLANE('',#10);\n" +
+                        "#30=B_SPLINE_CURVE_WITH_KNOTS('',1,(#31,#32),.UNSPECIFIED.,.F.,.F.,(2,2),(0.,4.),"
+                        ".UNSPECIFIED.);\n#31=CARTESIAN_POINT('',(0.,0.,0.));\n#32=CARTESIAN_POINT('',(4.,0.,0.));\n"
+                        "#50=SURFACE_CURVE('',#30,(#51),.PCURVE_S1.);\n" + pcurve(51, 5, 60) +
+                        "#60=B_SPLINE_CURVE_WITH_KNOTS('',1,(#61,#62),.UNSPECIFIED.,.F.,.F.,(2,2),(0.,4.),"
+                        ".UNSPECIFIED.);\n#61=CARTESIAN_POINT('',(0.,0.));\n#62=CARTESIAN_POINT('',(4.,0.));\n");
+    const StepGeometry& g = parsed.g;
+    for (bool same_sense : {true, false}) {
+        const Vector3d from = same_sense ? Vector3d(1, 0, 0) : Vector3d(3, 0, 0), to(4 - from.x(), 0, 0);
+        StepGeometry::EdgeRange range;
+        g.edge_curve(50, from, to, same_sense, 1e-9, &range);
+        const std::optional<geom::NurbsCurve2d> pc = g.edge_pcurve(50, 5, range, true);
+        ASSERT_TRUE(pc.has_value());
+        EXPECT_LE((pc->evaluate(pc->domain().first) - from.head<2>()).norm(), 1e-12);
+        EXPECT_LE((pc->evaluate(pc->domain().second) - to.head<2>()).norm(), 1e-12);
+        const StepGeometry::Surface S = g.surface(5, {from, to, Vector3d(2, 1, 0)});
+        const std::optional<geom::NurbsCurve2d> uv = g.map_pcurve(S, *pc);
+        ASSERT_TRUE(uv.has_value());
+        EXPECT_LE((uv->evaluate(uv->domain().second) - to.head<2>()).norm(), 1e-12);  // a plane maps as it is
+    }
+    // A range the bounded PCURVE does not cover.
+    EXPECT_FALSE(g.edge_pcurve(50, 5, StepGeometry::EdgeRange{3, 5, 0}, true).has_value());
+}
+
+TEST(StepGeometry, PcurvesThatCannotServeGiveNothing) {
+    const Parsed parsed(kCircleOnCylinder + "#6=CYLINDRICAL_SURFACE('',#10,2.);\n" +
+                        // #80: its only PCURVE lies on another surface instance (#6).
+                        "#80=SURFACE_CURVE('',#1,(#81),.PCURVE_S1.);\n" + pcurve(81, 6, 60) +
+                        // #83: a 2D kind not translated.
+                        "#83=SURFACE_CURVE('',#1,(#84),.PCURVE_S1.);\n" + pcurve(84, 5, 86) +
+                        "#86=HYPERBOLA('',#10,1.,1.);\n"
+                        // #87: a representation that is not defined.
+                        "#87=SURFACE_CURVE('',#1,(#88),.PCURVE_S1.);\n#88=PCURVE('',#5,#500);\n"
+                        // #89: a 2D curve with 3D points (a line along z).
+                        "#89=SURFACE_CURVE('',#1,(#90),.PCURVE_S1.);\n" + pcurve(90, 5, 92) +
+                        "#92=LINE('',#13,#93);\n#93=VECTOR('',#11,1.);\n"
+                        // #94: a curve in a cycle of TRIMMED_CURVEs.
+                        "#94=SURFACE_CURVE('',#1,(#95),.PCURVE_S1.);\n" + pcurve(95, 5, 97) +
+                        "#97=TRIMMED_CURVE('',#97,(PARAMETER_VALUE(0.)),(PARAMETER_VALUE(1.)),.T.,.PARAMETER.);\n");
+    const StepGeometry& g = parsed.g;
+    const StepGeometry::EdgeRange range{0, 0.5 * kPi, 2 * kPi};
+    EXPECT_TRUE(g.edge_pcurve(50, 5, range, true).has_value());  // the good one, for contrast
+    for (long long id : {80, 83, 87, 89, 94}) EXPECT_FALSE(g.edge_pcurve(id, 5, range, true).has_value()) << id;
+    EXPECT_FALSE(g.edge_pcurve(1, 5, range, true).has_value());    // a bare CIRCLE: no PCURVEs
+    EXPECT_FALSE(g.edge_pcurve(777, 5, range, true).has_value());  // not defined
+    EXPECT_FALSE(g.edge_pcurve(50, 5, StepGeometry::EdgeRange{1, 1, 0}, true).has_value());  // empty range
 }
 
 }  // namespace

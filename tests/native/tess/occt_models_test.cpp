@@ -2,13 +2,16 @@
 // read and meshed by trimkit and measured against areas and placements derived here:
 // a plate with three holes (STEP), a cylinder face across its seam, damaged p-curves
 // healed by ShapeFix, an assembly with one part placed twice, and solids read by
-// trimkit's own STEP reader. Only with OCCT (the models are made with it).
+// trimkit's own STEP reader, with hand-written cylinder faces whose edges carry
+// PCURVEs. Only with OCCT (the models are made with it).
 #include <gtest/gtest.h>
 
 #if TRIMKIT_HAVE_OCCT_MODELS
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 
@@ -524,6 +527,156 @@ INSTANTIATE_TEST_SUITE_P(
         Solid{"torus_hole_on_seams", [](const std::string& p) { return test::write_torus_hole_on_seams_iges(p); }},
         Solid{"frustum_hole_on_seam", [](const std::string& p) { return test::write_frustum_hole_on_seam_iges(p); }}),
     [](const ::testing::TestParamInfo<Solid>& info) { return std::string(info.param.name); });
+
+// ---- The own reader's use of the file's PCURVEs (read_step_native.cpp): hand-written
+// cylinder faces whose edges are SURFACE_CURVEs / SEAM_CURVEs with PCURVEs on the face's
+// CYLINDRICAL_SURFACE (no units: millimetres and radians). A PCURVE taken leaves no
+// "projected from model space" warning; a wrong one is checked against the 3D curve,
+// projected instead (with a warning) and the face keeps its area.
+
+// A STEP real with all its digits.
+std::string step_real(double x) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17E", x);
+    return buffer;
+}
+
+// A whole Part 21 file around `data`, one OPEN_SHELL of the ADVANCED_FACE #64.
+std::string step_file(const std::string& data) {
+    return "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\nFILE_NAME('t.stp','',(''),(''),'','','');\n"
+           "FILE_SCHEMA(('AUTOMOTIVE_DESIGN'));\nENDSEC;\nDATA;\n" +
+           data +
+           "#65=OPEN_SHELL('',(#64));\n#66=SHELL_BASED_SURFACE_MODEL('',(#65));\n"
+           "#99=(GEOMETRIC_REPRESENTATION_CONTEXT(2) PARAMETRIC_REPRESENTATION_CONTEXT() "
+           "REPRESENTATION_CONTEXT('2D SPACE',''));\nENDSEC;\nEND-ISO-10303-21;\n";
+}
+
+// The cylinder #5 of radius r about z, its bottom circle #8 and top circle #9 (height
+// h), the 2D unit vectors #31 (along u) and #33 (along v), a 3D unit vector #10 along z.
+std::string cylinder_entities(double r, double h) {
+    return "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=DIRECTION('',(0.,0.,1.));\n#3=DIRECTION('',(1.,0.,0.));\n"
+           "#4=AXIS2_PLACEMENT_3D('',#1,#2,#3);\n#5=CYLINDRICAL_SURFACE('',#4," + step_real(r) + ");\n"
+           "#6=CARTESIAN_POINT('',(0.,0.," + step_real(h) + "));\n#7=AXIS2_PLACEMENT_3D('',#6,#2,#3);\n"
+           "#8=CIRCLE('',#4," + step_real(r) + ");\n#9=CIRCLE('',#7," + step_real(r) + ");\n#10=VECTOR('',#2,1.);\n"
+           "#30=DIRECTION('',(1.,0.));\n#31=VECTOR('',#30,1.);\n#32=DIRECTION('',(0.,1.));\n#33=VECTOR('',#32,1.);\n";
+}
+
+// The 2D line #id through (u, v) along #vector, its DEFINITIONAL_REPRESENTATION #id+2
+// and PCURVE #id+3 on the cylinder #5.
+std::string cylinder_pcurve(int id, double u, double v, int vector) {
+    const std::string n = std::to_string(id);
+    return "#" + std::to_string(id + 1) + "=CARTESIAN_POINT('',(" + step_real(u) + "," + step_real(v) + "));\n#" +
+           n + "=LINE('',#" + std::to_string(id + 1) + ",#" + std::to_string(vector) + ");\n#" +
+           std::to_string(id + 2) + "=DEFINITIONAL_REPRESENTATION('',(#" + n + "),#99);\n#" +
+           std::to_string(id + 3) + "=PCURVE('',#5,#" + std::to_string(id + 2) + ");\n";
+}
+
+// A quarter of the cylinder (angles 0 to π/2, heights 0 to h) bounded by two arcs and
+// two rulings; the ruling at angle 0 has its PCURVE at angle `ruling_u` (0: right).
+std::string quarter_cylinder_step(double r, double h, double ruling_u) {
+    return step_file(
+        cylinder_entities(r, h) + "#11=CARTESIAN_POINT('',(" + step_real(r) + ",0.,0.));\n" +
+        "#12=CARTESIAN_POINT('',(0.," + step_real(r) + ",0.));\n#13=CARTESIAN_POINT('',(0.," + step_real(r) + "," +
+        step_real(h) + "));\n#14=CARTESIAN_POINT('',(" + step_real(r) + ",0.," + step_real(h) + "));\n" +
+        "#15=VERTEX_POINT('',#11);\n#16=VERTEX_POINT('',#12);\n#17=VERTEX_POINT('',#13);\n#18=VERTEX_POINT('',#14);\n"
+        "#19=LINE('',#11,#10);\n#20=LINE('',#12,#10);\n" +
+        cylinder_pcurve(100, 0, 0, 31) + cylinder_pcurve(110, 0, h, 31) + cylinder_pcurve(120, ruling_u, 0, 33) +
+        cylinder_pcurve(130, 0.5 * kPi, 0, 33) +
+        "#50=SURFACE_CURVE('',#8,(#103),.PCURVE_S1.);\n#51=SURFACE_CURVE('',#9,(#113),.PCURVE_S1.);\n"
+        "#52=SURFACE_CURVE('',#19,(#123),.PCURVE_S1.);\n#53=SURFACE_CURVE('',#20,(#133),.PCURVE_S1.);\n"
+        "#54=EDGE_CURVE('',#15,#16,#50,.T.);\n#55=EDGE_CURVE('',#18,#17,#51,.T.);\n"
+        "#56=EDGE_CURVE('',#15,#18,#52,.T.);\n#57=EDGE_CURVE('',#16,#17,#53,.T.);\n"
+        "#58=ORIENTED_EDGE('',*,*,#54,.T.);\n#59=ORIENTED_EDGE('',*,*,#57,.T.);\n"
+        "#60=ORIENTED_EDGE('',*,*,#55,.F.);\n#61=ORIENTED_EDGE('',*,*,#56,.F.);\n"
+        "#62=EDGE_LOOP('',(#58,#59,#60,#61));\n#63=FACE_OUTER_BOUND('',#62,.T.);\n"
+        "#64=ADVANCED_FACE('',(#63),#5,.T.);\n");
+}
+
+// The whole band of the cylinder: its bottom and top circles (closed edges) and the
+// seam ruling at angle 0, a SEAM_CURVE with PCURVEs u = 0 and u = 2π, used up and down.
+std::string cylinder_band_step(double r, double h) {
+    return step_file(
+        cylinder_entities(r, h) + "#11=CARTESIAN_POINT('',(" + step_real(r) + ",0.,0.));\n" +
+        "#14=CARTESIAN_POINT('',(" + step_real(r) + ",0.," + step_real(h) + "));\n" +
+        "#15=VERTEX_POINT('',#11);\n#18=VERTEX_POINT('',#14);\n#19=LINE('',#11,#10);\n" +
+        cylinder_pcurve(100, 0, 0, 31) + cylinder_pcurve(110, 0, h, 31) + cylinder_pcurve(120, 0, 0, 33) +
+        cylinder_pcurve(130, 2 * kPi, 0, 33) +
+        "#50=SURFACE_CURVE('',#8,(#103),.PCURVE_S1.);\n#51=SURFACE_CURVE('',#9,(#113),.PCURVE_S1.);\n"
+        "#52=SEAM_CURVE('',#19,(#123,#133),.PCURVE_S1.);\n"
+        "#54=EDGE_CURVE('',#15,#15,#50,.T.);\n#55=EDGE_CURVE('',#18,#18,#51,.T.);\n"
+        "#56=EDGE_CURVE('',#15,#18,#52,.T.);\n"
+        "#58=ORIENTED_EDGE('',*,*,#54,.T.);\n#59=ORIENTED_EDGE('',*,*,#56,.T.);\n"
+        "#60=ORIENTED_EDGE('',*,*,#55,.F.);\n#61=ORIENTED_EDGE('',*,*,#56,.F.);\n"
+        "#62=EDGE_LOOP('',(#58,#59,#60,#61));\n#63=FACE_OUTER_BOUND('',#62,.T.);\n"
+        "#64=ADVANCED_FACE('',(#63),#5,.T.);\n");
+}
+
+// The warnings of the model's only face that contain `text`.
+int warnings_with(const geom::Model& model, const std::string& text) {
+    int n = 0;
+    for (const std::string& w : model.faces.at(0).warnings) n += w.find(text) != std::string::npos;
+    return n;
+}
+
+// Reads `text` with the own reader and meshes it within T = 1e-3; checks the one face's
+// area against `area` of a cylinder patch of radius r with boundary length `perimeter`:
+// a surface within T of the cylinder has an area within a factor 1 ± T/r of it (Steiner:
+// the parallel surface at distance d has the factor 1 + d/r), its boundary within T
+// of the exact one changes it by at most perimeter × T.
+geom::Model read_own_and_check_area(const std::string& name, const std::string& text, double area, double r,
+                                    double perimeter) {
+    const std::string path = temp_path(name);
+    {
+        std::ofstream out(path);
+        out << text;
+    }
+    const geom::Model model = io::read_step(path, own_reader());
+    std::filesystem::remove(path);
+    EXPECT_EQ(model.faces.size(), 1u);
+    if (model.faces.size() != 1) return model;
+    const double T = 1e-3;
+    const tess::TessellationResult result = mesh_at(model, T);
+    EXPECT_TRUE(result.failed_faces.empty());
+    EXPECT_NEAR(mesh_area(result.mesh), area, area * T / r + curved_boundary_bound(perimeter, T));
+    return model;
+}
+
+TEST(OwnStepReader, TakesTheFilesPcurvesOnACylinderQuarter) {
+    const double r = 10, h = 20;
+    const geom::Model model = read_own_and_check_area("pc_quarter.stp", quarter_cylinder_step(r, h, 0), r * 0.5 * kPi * h,
+                                                        r, kPi * r + 2 * h);
+    if (model.faces.size() != 1) return;
+    EXPECT_EQ(warnings_with(model, "projected"), 0);
+    // The loop's corners in (u, v) are the PCURVEs' ends mapped: the surface there is at the vertices.
+    const geom::Face& f = model.faces[0];
+    ASSERT_EQ(f.loops.size(), 1u);
+    ASSERT_EQ(f.loops[0].coedges.size(), 4u);
+    for (const geom::Coedge& c : f.loops[0].coedges) {
+        const Eigen::Vector2d uv = c.curve.evaluate(c.curve.domain().first);
+        const Eigen::Vector3d x = f.surface.evaluate(uv.x(), uv.y());
+        EXPECT_NEAR(std::hypot(x.x(), x.y()), r, 1e-9);
+        EXPECT_TRUE(std::fabs(x.z()) < 1e-9 || std::fabs(x.z() - h) < 1e-9) << x.transpose();
+        EXPECT_TRUE(std::fabs(x.x()) < 1e-9 || std::fabs(x.y()) < 1e-9) << x.transpose();
+    }
+}
+
+TEST(OwnStepReader, AWrongPcurveIsProjectedInsteadAndTheAreaHolds) {
+    const double r = 10, h = 20;
+    // The ruling at angle 0 given a PCURVE at angle 0.5: 2 r sin(0.25) = 4.9 off the line.
+    const geom::Model model = read_own_and_check_area("pc_wrong.stp", quarter_cylinder_step(r, h, 0.5),
+                                                        r * 0.5 * kPi * h, r, kPi * r + 2 * h);
+    if (model.faces.size() != 1) return;
+    EXPECT_EQ(warnings_with(model, "parameter curve is off its model-space curve"), 1);
+    EXPECT_EQ(warnings_with(model, "projected from model space"), 1);
+}
+
+TEST(OwnStepReader, TakesBothPcurvesOfASeamOnACylinderBand) {
+    const double r = 10, h = 20;
+    const geom::Model model = read_own_and_check_area("pc_band.stp", cylinder_band_step(r, h), 2 * kPi * r * h, r,
+                                                        4 * kPi * r);
+    if (model.faces.size() != 1) return;
+    EXPECT_EQ(warnings_with(model, "projected"), 0);
+}
 
 }  // namespace
 }  // namespace trimkit
