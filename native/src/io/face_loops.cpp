@@ -263,9 +263,6 @@ struct LoopBuilder {
                 pcs.push_back(projection_tolerance > 0.0
                                   ? geom::project_curve_adaptive(projector, k, projection_tolerance, periods.u, periods.v)
                                   : geom::project_curve(projector, k));
-                if ((projector.closed_u() && seam_side(pcs.back(), 0) != 0) ||
-                    (projector.closed_v() && seam_side(pcs.back(), 1) != 0))
-                    on_seam.push_back(loop.coedges.size() + pcs.size() - 1);
             }
             if (!projected_reported) {
                 face.warnings.push_back("trim curve " + std::to_string(loop_number) +
@@ -274,6 +271,11 @@ struct LoopBuilder {
             }
         }
         for (std::size_t k = 0; k < pcs.size(); ++k) {
+            // A curve along a seam, projected or the file's (a SEAM_CURVE's two PCURVEs may
+            // both map onto one side), takes the side the loop needs (settle_seam_sides).
+            if ((projector.closed_u() && seam_side(pcs[k], 0) != 0) ||
+                (projector.closed_v() && seam_side(pcs[k], 1) != 0))
+                on_seam.push_back(loop.coedges.size());
             geom::Coedge e;
             e.curve = std::move(pcs[k]);
             if (seg.edge >= 0) {

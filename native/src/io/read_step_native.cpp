@@ -29,37 +29,6 @@ constexpr double kSameVertex = 1e-9;
 const char* const kAssemblyTypes[] = {"NEXT_ASSEMBLY_USAGE_OCCURRENCE", "MAPPED_ITEM",
                                       "ITEM_DEFINED_TRANSFORMATION"};
 
-// Surfaces closed round an axis: u is the angle round it (step_geometry.h), v too on
-// a torus, and a sphere's v runs from pole to pole. Their PCURVEs that reach a seam or
-// a pole are not used yet: a hole on a ball's seam (perforated_ball.stp of
-// bench/occt_reference's corpus) kept half its face, and chamfered_pocket.stp had 100
-// open edges, where the projected edges are right; the seam sides the PCURVEs take
-// and those the projector gives disagree.
-struct ClosedSides {
-    bool u = false, v = false;
-};
-ClosedSides closed_sides(const std::string& kind) {
-    const bool round = kind == "cylinder" || kind == "cone" || kind == "sphere" || kind == "torus" ||
-                       kind == "revolution";
-    return {round, kind == "sphere" || kind == "torus"};
-}
-
-// Share of the domain's width within which a curve counts as reaching its side.
-constexpr double kSideMargin = 1e-7;
-
-// True when a control point of c lies on or beyond a side of S's domain that
-// `sides` names (within kSideMargin of its width).
-bool reaches_closed_side(const geom::NurbsCurve2d& c, const geom::NurbsSurface& S, ClosedSides sides) {
-    const auto [u0, u1] = S.domain_u();
-    const auto [v0, v1] = S.domain_v();
-    const double mu = kSideMargin * (u1 - u0), mv = kSideMargin * (v1 - v0);
-    for (const Eigen::Vector2d& p : c.points()) {
-        if (sides.u && !(p.x() > u0 + mu && p.x() < u1 - mu)) return true;
-        if (sides.v && !(p.y() > v0 + mv && p.y() < v1 - mv)) return true;
-    }
-    return false;
-}
-
 class Topology {
 public:
     Topology(const StepPart21& file, const StepGeometry& geometry, geom::Model& model, ReadMonitor& monitor)
@@ -218,12 +187,7 @@ int Topology::add_face(const StepInstance& step_face) {
         face.source_entity = static_cast<int>(std::min<long long>(step_face.id, std::numeric_limits<int>::max()));
         FaceLoopsContext context;
         context.closure_tolerance = closure_tolerance(S.nurbs, 0.0);
-        const ClosedSides sides = closed_sides(S.kind);
-        context.map_to_nurbs = [this, &S, sides](const geom::NurbsCurve2d& c) {
-            std::optional<geom::NurbsCurve2d> mapped = geometry_.map_pcurve(S, c);
-            if (mapped && reaches_closed_side(*mapped, S.nurbs, sides)) mapped.reset();
-            return mapped;
-        };
+        context.map_to_nurbs = [this, &S](const geom::NurbsCurve2d& c) { return geometry_.map_pcurve(S, c); };
         build_face_loops(S.nurbs, context, hint, loops, false, first_is_outer, face);
         if (first_is_outer) {
             settle_outer_loop(face, "bound");

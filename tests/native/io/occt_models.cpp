@@ -26,6 +26,7 @@
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepTools.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRep_Builder.hxx>
 #include <GC_MakeArcOfCircle.hxx>
 #include <GC_MakeSegment.hxx>
@@ -291,6 +292,18 @@ double write_ball_hole_on_seam_iges(const std::string& path, double R, double r,
     const TopoDS_Shape ball = BRepPrimAPI_MakeSphere(R).Shape();
     const gp_Ax2 out(gp::Origin(), gp_Dir(1, 0, 0.6));
     return write_iges(BRepAlgoAPI_Cut(ball, BRepPrimAPI_MakeCylinder(out, r, 2 * R).Shape()).Shape(), path, brep_mode);
+}
+
+double write_perforated_ball(const std::string& path, double R, double r, int holes) {
+    TopoDS_Shape ball = BRepPrimAPI_MakeSphere(R).Shape();
+    for (int i = 0; i < holes; ++i) {
+        const double a = 2 * M_PI * i / holes;
+        const gp_Ax2 out(gp::Origin(), gp_Dir(std::cos(a), std::sin(a), 0.6));
+        ball = BRepAlgoAPI_Cut(ball, BRepPrimAPI_MakeCylinder(out, r, 2 * R).Shape()).Shape();
+    }
+    gp_Trsf turn;
+    turn.SetRotation(gp_Ax1(gp::Origin(), gp_Dir(1, 1, 0)), 0.7);
+    return write_iges(BRepBuilderAPI_Transform(ball, turn).Shape(), path, true);
 }
 
 double write_whole_ball_iges(const std::string& path, double R, bool brep_mode) {

@@ -66,6 +66,12 @@ double write_sphere_cut_near_pole_iges(const std::string& path, double R, double
 // mode (144/142, the sphere as a surface of revolution). Returns BRepGProp's area.
 double write_ball_hole_on_seam_iges(const std::string& path, double R, double r, bool brep_mode);
 
+// A ball of radius R about the origin pierced from its centre by `holes` cylinders of
+// radius r along (cos a, sin a, 0.6), a = 2 pi i / holes (the first on the seam, which
+// it cuts in two), then turned 0.7 rad about (1, 1, 0). B-rep mode (IGES 186..., or
+// STEP for a .stp path). Returns BRepGProp's area.
+double write_perforated_ball(const std::string& path, double R, double r, int holes);
+
 // A whole ball of radius R (BRepPrimAPI_MakeSphere): one face whose only loop is
 // its seam edge, down one side and up the other. IGES B-rep or faces mode.
 // Returns BRepGProp's area.

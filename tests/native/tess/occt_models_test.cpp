@@ -522,6 +522,10 @@ INSTANTIATE_TEST_SUITE_P(
               [](const std::string& p) { return test::write_sphere_cut_near_pole_iges(p, 25, 5, 3, 4); }},
         Solid{"ball_hole_on_seam", [](const std::string& p) { return test::write_ball_hole_on_seam_iges(p, 30, 6, true); }},
         Solid{"whole_ball", [](const std::string& p) { return test::write_whole_ball_iges(p, 25, true); }},
+        // Its seam's two pieces have SEAM_CURVEs whose PCURVEs both map onto u = 2 pi: the
+        // loop was a sliver along one side and the ball kept half its area until face_loops
+        // settled the sides of the file's seam curves as of projected ones.
+        Solid{"perforated_ball", [](const std::string& p) { return test::write_perforated_ball(p, 30, 3, 6); }},
         Solid{"cone_apex_hole", [](const std::string& p) { return test::write_cone_apex_hole_iges(p, 30, 50, 4, true); }},
         Solid{"filleted_hole_block", [](const std::string& p) { return test::write_filleted_hole_block_iges(p); }},
         Solid{"torus_hole_on_seams", [](const std::string& p) { return test::write_torus_hole_on_seams_iges(p); }},
@@ -641,15 +645,12 @@ geom::Model read_own_and_check_area(const std::string& name, const std::string& 
     return model;
 }
 
-// The quarter runs from the cylinder's seam (u = 0) to u = pi / 2: the ruling at pi / 2
-// keeps its PCURVE; the arcs and the ruling on the seam reach a closed side and are
-// projected (read_step_native: ClosedSides), one warning for the loop.
-TEST(OwnStepReader, TakesThePcurvesOffTheSeamOnACylinderQuarter) {
+TEST(OwnStepReader, TakesTheFilesPcurvesOnACylinderQuarter) {
     const double r = 10, h = 20;
     const geom::Model model = read_own_and_check_area("pc_quarter.stp", quarter_cylinder_step(r, h, 0), r * 0.5 * kPi * h,
                                                         r, kPi * r + 2 * h);
     if (model.faces.size() != 1) return;
-    EXPECT_EQ(warnings_with(model, "projected"), 1);
+    EXPECT_EQ(warnings_with(model, "projected"), 0);
     // The loop's corners in (u, v) are the PCURVEs' ends mapped: the surface there is at the vertices.
     const geom::Face& f = model.faces[0];
     ASSERT_EQ(f.loops.size(), 1u);
@@ -673,14 +674,14 @@ TEST(OwnStepReader, AWrongPcurveIsProjectedInsteadAndTheAreaHolds) {
     EXPECT_EQ(warnings_with(model, "projected from model space"), 1);
 }
 
-// A seam's two PCURVEs lie on the closed sides: projected for now (read_step_native:
-// ClosedSides), and the band is whole.
-TEST(OwnStepReader, ProjectsTheSeamOfACylinderBand) {
+// A seam's two PCURVEs may map onto one side of the domain: face_loops settles the
+// sides (settle_seam_sides) as for projected seams, and the band is whole.
+TEST(OwnStepReader, TakesBothPcurvesOfASeamOnACylinderBand) {
     const double r = 10, h = 20;
     const geom::Model model = read_own_and_check_area("pc_band.stp", cylinder_band_step(r, h), 2 * kPi * r * h, r,
                                                         4 * kPi * r);
     if (model.faces.size() != 1) return;
-    EXPECT_EQ(warnings_with(model, "projected"), 1);
+    EXPECT_EQ(warnings_with(model, "projected"), 0);
 }
 
 }  // namespace
