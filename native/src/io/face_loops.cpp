@@ -188,9 +188,17 @@ struct LoopBuilder {
                 if (!closed || side == 0) continue;
                 const auto [a, b] = dir == 0 ? S.domain_u() : S.domain_v();
                 const double here = side < 0 ? a : b, other = side < 0 ? b : a;
-                if (projector.free_at(wrap_into_domain(S, periods, prev_end), dir)) {
+                // Where the previous coedge ends at a pole, the next one's start decides
+                // when it is settled and off the pole (a sphere's octant: down its seam to
+                // the pole, where the loop turns), else the seam edge's other use.
+                const NurbsCurve2d& next = loop.coedges[(k + 1) % n].curve;
+                const Vector2d next_start = next.evaluate(next.domain().first);
+                const auto at_pole = [&](const Vector2d& uv) { return projector.free_at(wrap_into_domain(S, periods, uv), dir); };
+                const bool settled_next = !flagged[(k + 1) % n] && !at_pole(next_start);
+                const Vector2d& meet = at_pole(prev_end) && settled_next ? next_start : prev_end;
+                if (at_pole(meet)) {
                     if (partner_side(loop, flagged, k, dir) != side) continue;
-                } else if (std::abs(prev_end[dir] - other) >= std::abs(prev_end[dir] - here)) {
+                } else if (std::abs(meet[dir] - other) >= std::abs(meet[dir] - here)) {
                     continue;
                 }
                 std::vector<Vector2d> P = e.curve.points();

@@ -343,6 +343,13 @@ double write_filleted_hole_block_iges(const std::string& path, bool brep_mode) {
     return write_iges(round.Shape(), path, brep_mode);
 }
 
+double write_rounded_box(const std::string& path, double a, double b, double c, double r) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(a, b, c).Shape();
+    BRepFilletAPI_MakeFillet round(box);
+    for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) round.Add(r, TopoDS::Edge(e.Current()));
+    return write_iges(round.Shape(), path, true);
+}
+
 double write_torus_hole_on_seams_iges(const std::string& path) {
     const TopoDS_Shape ring = BRepPrimAPI_MakeTorus(40, 12).Shape();
     const gp_Ax2 radial(gp_Pnt(30, 0, 0), gp::DX());

@@ -66,6 +66,11 @@ double write_sphere_cut_near_pole_iges(const std::string& path, double R, double
 // mode (144/142, the sphere as a surface of revolution). Returns BRepGProp's area.
 double write_ball_hole_on_seam_iges(const std::string& path, double R, double r, bool brep_mode);
 
+// An a x b x c box with every edge rounded to radius r: its corners are sphere
+// octants, some of them bounded by the sphere's seam down to its pole. B-rep mode
+// (IGES 186..., or STEP for a .stp path). Returns BRepGProp's area.
+double write_rounded_box(const std::string& path, double a, double b, double c, double r);
+
 // A ball of radius R about the origin pierced from its centre by `holes` cylinders of
 // radius r along (cos a, sin a, 0.6), a = 2 pi i / holes (the first on the seam, which
 // it cuts in two), then turned 0.7 rad about (1, 1, 0). B-rep mode (IGES 186..., or

@@ -526,6 +526,11 @@ INSTANTIATE_TEST_SUITE_P(
         // loop was a sliver along one side and the ball kept half its area until face_loops
         // settled the sides of the file's seam curves as of projected ones.
         Solid{"perforated_ball", [](const std::string& p) { return test::write_perforated_ball(p, 30, 3, 6); }},
+        // Corner octants run down the sphere's seam to its pole and turn there: the seam
+        // curve took the side the pole (any u) gave, the loop was closed along the equator
+        // round the rest of the sphere and 88 edges of plate_with_holes.stp were open,
+        // until the coedge after the pole decided the side.
+        Solid{"rounded_box", [](const std::string& p) { return test::write_rounded_box(p, 50, 30, 20, 4); }},
         Solid{"cone_apex_hole", [](const std::string& p) { return test::write_cone_apex_hole_iges(p, 30, 50, 4, true); }},
         Solid{"filleted_hole_block", [](const std::string& p) { return test::write_filleted_hole_block_iges(p); }},
         Solid{"torus_hole_on_seams", [](const std::string& p) { return test::write_torus_hole_on_seams_iges(p); }},
