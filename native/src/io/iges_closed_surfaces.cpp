@@ -59,23 +59,84 @@ Eigen::Vector2d wrap_into_domain(const geom::NurbsSurface& s, const SurfacePerio
     return uv;
 }
 
+// Share of a period within which a curve's middle counts as near the seam.
+constexpr double kNearSeam = 1e-3;
+
+// How far c's middle lies from the seams of the closed directions (their sides,
+// modulo the period), as a share of the period; 0.5 where none is closed.
+double seam_clearance(const geom::NurbsCurve2d& c, const geom::NurbsSurface& surface,
+                      const SurfacePeriods& periods) {
+    const Eigen::Vector2d mid = wrap_into_domain(surface, periods, c.evaluate(0.5 * (c.domain().first + c.domain().second)));
+    double clearance = 0.5;
+    for (int d = 0; d < 2; ++d) {
+        if (!(periods[d] > 0.0)) continue;
+        const double a = domain(surface, d).first;
+        const double x = (mid[d] - a) / periods[d];
+        clearance = std::min({clearance, std::fabs(x), std::fabs(1.0 - x)});
+    }
+    return clearance;
+}
+
+// The coedge the others are shifted to continue: the first, unless its middle lies
+// by a seam, where its side is a guess (sewn_patchwork.stp of bench/occt_reference's
+// corpus: a sphere octant's meridian 3e-5 off its seam), then the one farthest from
+// the seams.
+std::size_t unwrap_anchor(const geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods) {
+    if (loop.coedges.empty() || seam_clearance(loop.coedges[0].curve, surface, periods) >= kNearSeam) return 0;
+    std::size_t best = 0;
+    double best_clearance = -1.0;
+    for (std::size_t k = 0; k < loop.coedges.size(); ++k) {
+        const double c = seam_clearance(loop.coedges[k].curve, surface, periods);
+        if (c > best_clearance) best = k, best_clearance = c;
+    }
+    return best;
+}
+
 bool unwrap_loop(geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods) {
     if (!periods.any()) return false;
     const double size = surface.control_box().diagonal().norm();
-    bool moved = false;
-    for (std::size_t k = 1; k < loop.coedges.size(); ++k) {
-        const geom::NurbsCurve2d& prev = loop.coedges[k - 1].curve;
-        geom::NurbsCurve2d& cur = loop.coedges[k].curve;
-        const Eigen::Vector2d joint = prev.evaluate(prev.domain().second);
-        const Eigen::Vector2d gap = joint - cur.evaluate(cur.domain().first);
+    const std::size_t n = loop.coedges.size(), anchor = unwrap_anchor(loop, surface, periods);
+    if (anchor != 0)  // the loop starts at its anchor (a cycle: the order is the same)
+        std::rotate(loop.coedges.begin(), loop.coedges.begin() + static_cast<long>(anchor), loop.coedges.end());
+    // The whole periods moving `from` onto `joint` in the closed directions whose
+    // parameter is not free there (0 where it is: a pole); `free` set when one is.
+    const auto shift_onto = [&](const Eigen::Vector2d& joint, const Eigen::Vector2d& from, bool* free) {
         const Eigen::Vector2d at = wrap_into_domain(surface, periods, joint);
         Eigen::Vector2d shift = Eigen::Vector2d::Zero();
-        for (int d = 0; d < 2; ++d)
-            if (periods[d] > 0.0 && !geom::parameter_is_free(surface, at, d, size))
-                shift[d] = periods[d] * std::round(gap[d] / periods[d]);
-        if (shift.isZero()) continue;
-        cur = cur.transformed(Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
+        for (int d = 0; d < 2; ++d) {
+            if (!(periods[d] > 0.0)) continue;
+            if (geom::parameter_is_free(surface, at, d, size)) {
+                if (free) *free = true;
+                continue;
+            }
+            shift[d] = periods[d] * std::round((joint[d] - from[d]) / periods[d]);
+        }
+        return shift;
+    };
+    const auto end_of = [&](std::size_t k) { return loop.coedges[k].curve.evaluate(loop.coedges[k].curve.domain().second); };
+    const auto start_of = [&](std::size_t k) { return loop.coedges[k].curve.evaluate(loop.coedges[k].curve.domain().first); };
+    bool moved = false;
+    const auto move = [&](std::size_t k, const Eigen::Vector2d& shift) {
+        if (shift.isZero()) return;
+        geom::NurbsCurve2d& c = loop.coedges[k].curve;
+        c = c.transformed(Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
         moved = true;
+    };
+    std::size_t first_free = n;  // the first coedge that starts where a parameter is free
+    for (std::size_t k = 1; k < n; ++k) {
+        bool free = false;
+        move(k, shift_onto(end_of(k - 1), start_of(k), &free));
+        if (free && first_free == n) first_free = k;
+    }
+    // The coedges after a pole are placed from there only by the one that leaves it,
+    // whose side is a guess: they are placed back from the loop's start instead, across
+    // joints where no parameter is free (sewn_patchwork.stp: a sphere octant whose
+    // meridian from the pole ends by the seam, where the loop goes on).
+    for (std::size_t k = n; k-- > first_free;) {
+        bool free = false;
+        const Eigen::Vector2d shift = shift_onto(start_of((k + 1) % n), end_of(k), &free);
+        if (free) break;
+        move(k, shift);
     }
     return moved;
 }

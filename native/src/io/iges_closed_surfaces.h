@@ -31,7 +31,8 @@ Eigen::Vector2d wrap_into_domain(const geom::NurbsSurface& s, const SurfacePerio
                                  Eigen::Vector2d uv);
 
 // Shifts coedges by whole periods so that each starts within half a period of
-// where the previous one ends (the first stays), except across a joint at a pole of
+// where the previous one ends (the first stays, unless it runs by a seam: then the
+// one farthest from the seams), except across a joint at a pole of
 // `surface` in that direction: every u of a pole is the same point, so a coedge may
 // leave it on the other side of the seam (a sphere's seam edge runs up to the pole
 // on one side and back down on the other). Returns true if any moved.
