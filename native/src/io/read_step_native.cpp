@@ -9,6 +9,7 @@
 
 #include "geom/error.h"
 #include "io/face_loops.h"
+#include "io/step_assembly.h"
 #include "io/step_geometry.h"
 #include "io/step_part21.h"
 #include "io/step_styles.h"
@@ -25,9 +26,6 @@ using Eigen::Vector3d;
 constexpr int kEdgeSamples = 16;
 // Relative distance below which an edge's two vertex points are one (a closed edge).
 constexpr double kSameVertex = 1e-9;
-// Entity types that place parts (assemblies): this reader leaves them to OCCT.
-const char* const kAssemblyTypes[] = {"NEXT_ASSEMBLY_USAGE_OCCURRENCE", "MAPPED_ITEM",
-                                      "ITEM_DEFINED_TRANSFORMATION"};
 
 class Topology {
 public:
@@ -298,6 +296,8 @@ void scale_to_millimetres(geom::Model& model, double metres_per_length) {
         if (e.start) e.start = factor * *e.start;
         if (e.end) e.end = factor * *e.end;
     }
+    // A placement's rotation keeps; its translation is a length.
+    for (geom::Instance& i : model.instances) i.transform.translation() *= factor;
 }
 
 // The name of the only PRODUCT, or "" when there are several or none.
@@ -318,11 +318,12 @@ geom::Model read_step_native(const std::string& text, const std::string& name, R
     const StepPart21 file = StepPart21::parse(text, name);
     monitor.report(1.0);
     monitor.check();
-    for (const char* type : kAssemblyTypes)
-        if (const std::vector<const StepInstance*> found = file.of_type(type); !found.empty())
-            unsupported_step_entity(file, *found.front(), "an assembly");
     const StepUnits units = step_units(file);
     const StepGeometry geometry(file, units.radians_per_angle);
+    // Assemblies (step_assembly.h): every solid is placed by the product structure.
+    const bool assembly = step_has_assembly(file);
+    const std::vector<StepOccurrence> occurrences = assembly ? step_occurrences(file, geometry)
+                                                             : std::vector<StepOccurrence>();
     geom::Model model;
     Topology topology(file, geometry, model, monitor);
     monitor.stage(0.2, 1.0);
@@ -341,6 +342,7 @@ geom::Model read_step_native(const std::string& text, const std::string& name, R
         monitor.report(static_cast<double>(i + 1) / solids.size());
     }
     if (model.faces.empty()) throw geom::ReadError(name, 0, "no face of the STEP file could be read");
+    if (assembly) place_step_occurrences(occurrences, topology.bodies(), model, name);
     const std::string product = product_name(file);
     for (geom::Body& b : model.bodies)
         if (b.name.empty() || b.name == "NONE") b.name = product;

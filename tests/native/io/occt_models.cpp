@@ -242,6 +242,61 @@ void write_box_assembly_step(const std::string& path, double dx, double dy, doub
         throw std::runtime_error("cannot write " + path);
 }
 
+// An XCAF document's shape tool; the document stays open for the writer.
+Handle(XCAFDoc_ShapeTool) new_xcaf_shapes(Handle(TDocStd_Document)& doc) {
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+    return XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+}
+
+void write_xcaf_step(const Handle(TDocStd_Document)& doc, const std::string& path) {
+    STEPCAFControl_Writer writer;
+    if (!writer.Transfer(doc, STEPControl_AsIs) || writer.Write(path.c_str()) != IFSelect_RetDone)
+        throw std::runtime_error("cannot write " + path);
+}
+
+TopLoc_Location translation(const Eigen::Vector3d& t) {
+    gp_Trsf a;
+    a.SetTranslation(gp_Vec(t.x(), t.y(), t.z()));
+    return TopLoc_Location(a);
+}
+
+void write_nested_box_assembly_step(const std::string& path, double dx, double dy, double dz,
+                                    const Eigen::Vector3d& t1, const Eigen::Vector3d& t2,
+                                    const Eigen::Vector3d& s1, const Eigen::Vector3d& s2) {
+    Handle(TDocStd_Document) doc;
+    const Handle(XCAFDoc_ShapeTool) shapes = new_xcaf_shapes(doc);
+    const TDF_Label part = shapes->AddShape(BRepPrimAPI_MakeBox(dx, dy, dz).Shape(), false);
+    TDataStd_Name::Set(part, "block");
+    const TDF_Label pair = shapes->NewShape();
+    TDataStd_Name::Set(pair, "pair");
+    shapes->AddComponent(pair, part, translation(t1));
+    shapes->AddComponent(pair, part, translation(t2));
+    const TDF_Label top = shapes->NewShape();
+    TDataStd_Name::Set(top, "top");
+    shapes->AddComponent(top, pair, translation(s1));
+    gp_Trsf turn;
+    turn.SetRotation(gp::OX(), M_PI / 2);
+    gp_Trsf shift;
+    shift.SetTranslation(gp_Vec(s2.x(), s2.y(), s2.z()));
+    shapes->AddComponent(top, pair, TopLoc_Location(shift * turn));
+    shapes->UpdateAssemblies();
+    write_xcaf_step(doc, path);
+}
+
+void write_doubling_assembly_step(const std::string& path, int levels) {
+    Handle(TDocStd_Document) doc;
+    const Handle(XCAFDoc_ShapeTool) shapes = new_xcaf_shapes(doc);
+    TDF_Label below = shapes->AddShape(BRepPrimAPI_MakeBox(1, 1, 1).Shape(), false);
+    for (int k = 0; k < levels; ++k) {
+        const TDF_Label level = shapes->NewShape();
+        shapes->AddComponent(level, below, translation(Eigen::Vector3d::Zero()));
+        shapes->AddComponent(level, below, translation(Eigen::Vector3d(std::ldexp(2.0, k), 0, 0)));
+        below = level;
+    }
+    shapes->UpdateAssemblies();
+    write_xcaf_step(doc, path);
+}
+
 namespace {
 
 double area_of(const TopoDS_Shape& shape) {

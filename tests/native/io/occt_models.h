@@ -47,6 +47,17 @@ void write_slow_corner_face_brep(const std::string& path, double L, double gap);
 void write_box_assembly_step(const std::string& path, double dx, double dy, double dz,
                              const Eigen::Vector3d& t1, const Eigen::Vector3d& t2);
 
+// An assembly "top" holding the sub-assembly "pair" twice: at translation s1, and
+// turned by 90° about x, then moved by s2; "pair" holds the part "block" (box dx x dy x dz
+// at the origin) translated by t1 and by t2, as STEP (XCAF).
+void write_nested_box_assembly_step(const std::string& path, double dx, double dy, double dz,
+                                    const Eigen::Vector3d& t1, const Eigen::Vector3d& t2,
+                                    const Eigen::Vector3d& s1, const Eigen::Vector3d& s2);
+
+// `levels` assemblies, each holding the one below twice (unmoved and moved by 2^(k+1)
+// along x), over a unit box: 2^levels occurrences of one part, as STEP (XCAF).
+void write_doubling_assembly_step(const std::string& path, int levels);
+
 // Solids written by OCCT's IGES writer in B-rep mode (186/514/510/508 on 192/196
 // surfaces with form 1): each returns the solid's area by OCCT's BRepGProp, the
 // independent measure the tests compare trimkit's mesh with. A path ending in .stp or

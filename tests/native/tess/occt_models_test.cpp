@@ -3,7 +3,8 @@
 // a plate with three holes (STEP), a cylinder face across its seam, damaged p-curves
 // healed by ShapeFix, an assembly with one part placed twice, and solids read by
 // trimkit's own STEP reader, with hand-written cylinder faces whose edges carry
-// PCURVEs. Only with OCCT (the models are made with it).
+// PCURVEs, and assemblies (placed, nested, in other units, cyclic, exploding) read by
+// it as by OCCT's. Only with OCCT (the models are made with it).
 #include <gtest/gtest.h>
 
 #if TRIMKIT_HAVE_OCCT_MODELS
@@ -15,6 +16,7 @@
 #include <functional>
 #include <string>
 
+#include "geom/error.h"
 #include "geom/flatten_instances.h"
 #include "io/occt_models.h"
 #include "io/read_brep.h"
@@ -22,6 +24,7 @@
 #include "io/read_step.h"
 #include "tess/collapsed_side.h"
 #include "tess/tessellate_model.h"
+#include "test_support.h"
 
 namespace trimkit {
 namespace {
@@ -687,6 +690,262 @@ TEST(OwnStepReader, TakesBothPcurvesOfASeamOnACylinderBand) {
                                                         4 * kPi * r);
     if (model.faces.size() != 1) return;
     EXPECT_EQ(warnings_with(model, "projected"), 0);
+}
+
+// ---- Assemblies read by trimkit's own reader (step_assembly.h) ----------------------
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_text(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+}
+
+// Each instance of `own` is one of `occt`'s: the same name, path and transform, and a
+// body with as many faces; no instance of OCCT's is left over.
+void expect_same_instances(const geom::Model& own, const geom::Model& occt, const std::string& what) {
+    ASSERT_EQ(own.instances.size(), occt.instances.size()) << what;
+    std::vector<bool> taken(occt.instances.size(), false);
+    for (const geom::Instance& i : own.instances) {
+        bool found = false;
+        for (std::size_t k = 0; k < occt.instances.size() && !found; ++k) {
+            const geom::Instance& o = occt.instances[k];
+            if (taken[k] || o.name != i.name || o.path != i.path) continue;
+            if (!o.transform.matrix().isApprox(i.transform.matrix(), 1e-9)) continue;
+            if (own.bodies[i.body].faces.size() != occt.bodies[o.body].faces.size()) continue;
+            taken[k] = found = true;
+        }
+        EXPECT_TRUE(found) << what << ": own instance " << i.name << " at "
+                           << i.transform.translation().transpose() << " is none of OCCT's";
+    }
+}
+
+// The boxes of the flattened model's faces per instance (faces of instance k follow
+// those of instance k - 1, `faces_per_body` each).
+std::vector<Eigen::AlignedBox3d> instance_boxes(const geom::Model& model, std::size_t faces_per_body) {
+    const tess::TessellationResult result = mesh_at(geom::flatten_instances(model), 0.01);
+    EXPECT_TRUE(result.failed_faces.empty());
+    std::vector<Eigen::AlignedBox3d> boxes(model.instances.size());
+    for (std::size_t t = 0; t < result.mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k)
+            boxes[static_cast<std::size_t>(result.mesh.face_ids[t]) / faces_per_body].extend(
+                result.mesh.positions[result.mesh.triangles[t][k]]);
+    return boxes;
+}
+
+TEST(OwnStepReader, PlacesAPartTwiceAsOcctDoes) {
+    REQUIRE_OCCT();
+    const double dx = 10, dy = 4, dz = 2;
+    const Eigen::Vector3d t1(100, 0, 0), t2(0, 50, 7);
+    const std::string path = temp_path("own_pair.stp");
+    test::write_box_assembly_step(path, dx, dy, dz, t1, t2);
+    const geom::Model own = io::read_step(path, own_reader());
+    const geom::Model occt = io::read_step(path);
+    ASSERT_EQ(own.bodies.size(), 1u);  // the part once
+    EXPECT_EQ(own.bodies[0].name, "block");
+    ASSERT_EQ(own.instances.size(), 2u);
+    expect_same_instances(own, occt, "pair");
+    // Where the placements put the boxes: t1; turned 90° about z, then t2.
+    const std::vector<Eigen::AlignedBox3d> boxes = instance_boxes(own, 6);
+    EXPECT_TRUE(boxes[0].min().isApprox(t1, 1e-9));
+    EXPECT_TRUE(boxes[0].max().isApprox(t1 + Eigen::Vector3d(dx, dy, dz), 1e-9));
+    EXPECT_TRUE(boxes[1].min().isApprox(t2 + Eigen::Vector3d(-dy, 0, 0), 1e-9));
+    EXPECT_TRUE(boxes[1].max().isApprox(t2 + Eigen::Vector3d(0, dx, dz), 1e-9));
+    std::filesystem::remove(path);
+}
+
+TEST(OwnStepReader, ComposesTheTransformsOfANestedAssembly) {
+    REQUIRE_OCCT();
+    const double dx = 10, dy = 4, dz = 2;
+    const Eigen::Vector3d t1(100, 0, 0), t2(0, 50, 7), s1(0, 0, 300), s2(-40, 20, 0);
+    const std::string path = temp_path("own_nested.stp");
+    test::write_nested_box_assembly_step(path, dx, dy, dz, t1, t2, s1, s2);
+    const geom::Model own = io::read_step(path, own_reader());
+    const geom::Model occt = io::read_step(path);
+    ASSERT_EQ(own.bodies.size(), 1u);
+    ASSERT_EQ(own.instances.size(), 4u);
+    expect_same_instances(own, occt, "top");
+    for (const geom::Instance& i : own.instances) {
+        ASSERT_EQ(i.path.size(), 2u);
+        EXPECT_EQ(i.path[0], "top");
+    }
+    // Outer placement after inner: the 4 boxes' corners nearest -infinity, derived.
+    const Eigen::Affine3d outer2 = Eigen::Translation3d(s2) * Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitX());
+    std::vector<Eigen::AlignedBox3d> expected;
+    for (const Eigen::Affine3d& outer : {Eigen::Affine3d(Eigen::Translation3d(s1)), outer2})
+        for (const Eigen::Vector3d& inner : {t1, t2}) {
+            Eigen::AlignedBox3d box;
+            for (int c = 0; c < 8; ++c)
+                box.extend(outer * (inner + Eigen::Vector3d(c & 1 ? dx : 0, c & 2 ? dy : 0, c & 4 ? dz : 0)));
+            expected.push_back(box);
+        }
+    const std::vector<Eigen::AlignedBox3d> boxes = instance_boxes(own, 6);
+    for (const Eigen::AlignedBox3d& e : expected) {
+        const bool placed = std::any_of(boxes.begin(), boxes.end(), [&e](const Eigen::AlignedBox3d& b) {
+            return b.min().isApprox(e.min(), 1e-9) && b.max().isApprox(e.max(), 1e-9);
+        });
+        EXPECT_TRUE(placed) << "no box at " << e.min().transpose() << " .. " << e.max().transpose();
+    }
+    std::filesystem::remove(path);
+}
+
+// Placements are lengths: a file in centimetres puts the boxes 10 times as far (mm).
+TEST(OwnStepReader, ScalesPlacementsWithTheFilesLengthUnit) {
+    REQUIRE_OCCT();
+    const Eigen::Vector3d t1(100, 0, 0), t2(0, 50, 7);
+    const std::string mm = temp_path("own_pair_mm.stp"), cm = temp_path("own_pair_cm.stp");
+    test::write_box_assembly_step(mm, 10, 4, 2, t1, t2);
+    std::string text = read_text(mm);
+    ASSERT_NE(text.find(".MILLI."), std::string::npos);
+    for (std::size_t at = text.find(".MILLI."); at != std::string::npos; at = text.find(".MILLI.", at))
+        text.replace(at, 7, ".CENTI.");  // every representation context's unit
+    write_text(cm, text);
+    const geom::Model own = io::read_step(cm, own_reader());
+    const geom::Model occt = io::read_step(cm);
+    ASSERT_EQ(own.instances.size(), 2u);
+    expect_same_instances(own, occt, "pair in cm");
+    EXPECT_TRUE(own.instances[0].transform.translation().isApprox(10 * t1, 1e-9))
+        << own.instances[0].transform.translation().transpose();
+    std::filesystem::remove(mm);
+    std::filesystem::remove(cm);
+}
+
+// The product definitions of the first NEXT_ASSEMBLY_USAGE_OCCURRENCE in `text`:
+// relating (the assembly) and related (the part), as "#12".
+std::pair<std::string, std::string> first_component(const std::string& text) {
+    const std::size_t at = text.find("NEXT_ASSEMBLY_USAGE_OCCURRENCE(");
+    const std::size_t end = text.find(')', at);
+    std::vector<std::string> refs;
+    for (std::size_t h = text.find('#', at); h < end; h = text.find('#', h + 1))
+        refs.push_back(text.substr(h, text.find_first_of(",)", h) - h));
+    return refs.size() >= 2 ? std::make_pair(refs[0], refs[1]) : std::make_pair(std::string(), std::string());
+}
+
+TEST(OwnStepReader, AnAssemblyThatContainsItselfIsAReadErrorWithItsLine) {
+    REQUIRE_OCCT();
+    const std::string path = temp_path("own_cycle.stp");
+    test::write_box_assembly_step(path, 10, 4, 2, {100, 0, 0}, {0, 50, 7});
+    std::string text = read_text(path);
+    const auto [assembly, part] = first_component(text);
+    ASSERT_FALSE(assembly.empty());
+    // The part made a component of its own assembly's: pair -> block -> pair.
+    const std::size_t data_end = text.rfind("ENDSEC;");
+    const std::string cycle = "#999999 = NEXT_ASSEMBLY_USAGE_OCCURRENCE('9','loop','',";
+    text.insert(data_end, cycle + part + "," + assembly + ",$);\n");
+    write_text(path, text);
+    // The error names the line of one of the cycle's two NEXT_ASSEMBLY_USAGE_OCCURRENCEs.
+    const auto line_of = [&text](std::size_t at) {
+        return static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n')) + 1;
+    };
+    const int original = line_of(text.find("NEXT_ASSEMBLY_USAGE_OCCURRENCE(")), added = line_of(data_end);
+    try {
+        io::read_step(path, own_reader());
+        ADD_FAILURE() << "a cyclic assembly was read";
+    } catch (const geom::ReadError& e) {
+        EXPECT_EQ(e.file(), path);
+        EXPECT_TRUE(e.line() == original || e.line() == added) << e.what();
+        EXPECT_NE(e.reason().find("contains itself"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(path);
+}
+
+// 18 levels each holding the one below twice: 2^18 = 262144 occurrences of one box,
+// more than kMaxStepOccurrences (200000): an error, not 262144 instances.
+TEST(OwnStepReader, AnExplodingAssemblyIsAReadError) {
+    REQUIRE_OCCT();
+    const std::string path = temp_path("own_doubling.stp");
+    test::write_doubling_assembly_step(path, 18);
+    try {
+        io::read_step(path, own_reader());
+        ADD_FAILURE() << "2^18 occurrences were read";
+    } catch (const geom::ReadError& e) {
+        EXPECT_NE(e.reason().find("more than 200000"), std::string::npos) << e.what();
+    }
+    // 10 levels: 1024 instances of one body, the last box 2 + 4 + ... + 1024 along x.
+    test::write_doubling_assembly_step(path, 10);
+    const geom::Model model = io::read_step(path, own_reader());
+    EXPECT_EQ(model.bodies.size(), 1u);
+    ASSERT_EQ(model.instances.size(), 1024u);
+    double far = 0;
+    for (const geom::Instance& i : model.instances) far = std::max(far, i.transform.translation().x());
+    EXPECT_DOUBLE_EQ(far, 2046.0);
+    std::filesystem::remove(path);
+}
+
+// A part whose shape maps another representation twice (MAPPED_ITEM, ISO 10303-43
+// mapped_item): the plate's ADVANCED_BREP_SHAPE_REPRESENTATION written once, placed at
+// (200, 0, 0) and, turned 90° about z, at (0, 0, 50). One body, two instances, the
+// flattened plates where the maps put them and where OCCT's reader puts them.
+TEST(OwnStepReader, PlacesAMappedRepresentationByItsMaps) {
+    REQUIRE_OCCT();
+    const double L = 100, W = 60, H = 10;
+    const std::string path = temp_path("own_mapped.stp");
+    test::write_plate_with_holes_step(path, L, W, H, {{20, 30}, {50, 30}, {80, 30}}, 8);
+    std::string text = read_text(path);
+    // "#10 = ADVANCED_BREP_SHAPE_REPRESENTATION('',(#11,#15),#415);": its name and context.
+    const std::size_t absr = text.find("ADVANCED_BREP_SHAPE_REPRESENTATION(");
+    ASSERT_NE(absr, std::string::npos);
+    const std::size_t hash = text.rfind('#', absr);
+    const std::string rep = text.substr(hash, text.find_first_of(" =", hash) - hash);
+    const std::size_t close = text.find(");", absr);
+    const std::size_t context_at = text.rfind('#', close);
+    const std::string context = text.substr(context_at, close - context_at);
+    const std::size_t sdr = text.find("SHAPE_DEFINITION_REPRESENTATION(");
+    const std::size_t sdr_rep = text.find("," + rep + ")", sdr);
+    ASSERT_NE(sdr_rep, std::string::npos);
+    text.replace(sdr_rep, rep.size() + 2, ",#900012)");
+    const std::string maps =
+        "#900001 = CARTESIAN_POINT('',(0.,0.,0.));\n#900002 = DIRECTION('',(0.,0.,1.));\n"
+        "#900003 = DIRECTION('',(1.,0.,0.));\n#900004 = AXIS2_PLACEMENT_3D('',#900001,#900002,#900003);\n"
+        "#900005 = CARTESIAN_POINT('',(200.,0.,0.));\n#900006 = AXIS2_PLACEMENT_3D('',#900005,#900002,#900003);\n"
+        "#900007 = CARTESIAN_POINT('',(0.,0.,50.));\n#900013 = DIRECTION('',(0.,1.,0.));\n"
+        "#900008 = AXIS2_PLACEMENT_3D('',#900007,#900002,#900013);\n"
+        "#900009 = REPRESENTATION_MAP(#900004," + rep + ");\n#900010 = MAPPED_ITEM('a',#900009,#900006);\n"
+        "#900011 = MAPPED_ITEM('b',#900009,#900008);\n"
+        "#900012 = SHAPE_REPRESENTATION('',(#900010,#900011,#900004)," + context + ");\n";
+    text.insert(text.rfind("ENDSEC;"), maps);
+    write_text(path, text);
+    const geom::Model own = io::read_step(path, own_reader());
+    const geom::Model occt = io::read_step(path);
+    ASSERT_EQ(own.bodies.size(), 1u);
+    ASSERT_EQ(own.instances.size(), 2u);
+    const std::size_t faces = own.bodies[0].faces.size();
+    const std::vector<Eigen::AlignedBox3d> boxes = instance_boxes(own, faces);
+    EXPECT_TRUE(boxes[0].min().isApprox(Eigen::Vector3d(200, 0, 0), 1e-9)) << boxes[0].min().transpose();
+    EXPECT_TRUE(boxes[0].max().isApprox(Eigen::Vector3d(200 + L, W, H), 1e-9)) << boxes[0].max().transpose();
+    EXPECT_TRUE(boxes[1].min().isApprox(Eigen::Vector3d(-W, 0, 50), 1e-9)) << boxes[1].min().transpose();
+    EXPECT_TRUE(boxes[1].max().isApprox(Eigen::Vector3d(0, L, 50 + H), 1e-9)) << boxes[1].max().transpose();
+    // OCCT's reader: the same faces, placed the same (its model may keep them as bodies).
+    const geom::Model own_flat = geom::flatten_instances(own), occt_flat = geom::flatten_instances(occt);
+    EXPECT_EQ(own_flat.faces.size(), occt_flat.faces.size());
+    const double T = 0.01;
+    const tess::TessellationResult a = mesh_at(own_flat, T), b = mesh_at(occt_flat, T);
+    Eigen::AlignedBox3d own_box, occt_box;
+    for (const Eigen::Vector3d& p : a.mesh.positions) own_box.extend(p);
+    for (const Eigen::Vector3d& p : b.mesh.positions) occt_box.extend(p);
+    EXPECT_TRUE(own_box.min().isApprox(occt_box.min(), 1e-6) && own_box.max().isApprox(occt_box.max(), 1e-6))
+        << own_box.min().transpose() << " .. " << own_box.max().transpose() << " vs OCCT's "
+        << occt_box.min().transpose() << " .. " << occt_box.max().transpose();
+    EXPECT_NEAR(mesh_area(a.mesh), mesh_area(b.mesh), 4e-3 * mesh_area(b.mesh));
+    std::filesystem::remove(path);
+}
+
+// The shared assemblies: as many bodies as OCCT's reader gives (each part once) and
+// the same instances (names, paths, transforms).
+TEST(OwnStepReader, ReadsTheSharedAssembliesAsOcctDoes) {
+    REQUIRE_OCCT();
+    for (const char* name : {"step/as1-oc-214-mat.stp", "step/bug24283_spheres.stp", "step/xr1-tc-blt.stp",
+                             "step/xr1-tc-nut.stp", "step/xr1-tc-rod.stp"}) {
+        TRIMKIT_CAD_SAMPLE(path, name);
+        const geom::Model own = io::read_step(path, own_reader());
+        const geom::Model occt = io::read_step(path);
+        EXPECT_EQ(own.bodies.size(), occt.bodies.size()) << name;
+        EXPECT_EQ(own.faces.size(), occt.faces.size()) << name;
+        expect_same_instances(own, occt, name);
+    }
 }
 
 }  // namespace
