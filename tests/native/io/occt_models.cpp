@@ -26,6 +26,8 @@
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepTools.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <TopoDS_Solid.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRep_Builder.hxx>
 #include <GC_MakeArcOfCircle.hxx>
@@ -403,6 +405,28 @@ double write_rounded_box(const std::string& path, double a, double b, double c, 
     BRepFilletAPI_MakeFillet round(box);
     for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) round.Add(r, TopoDS::Edge(e.Current()));
     return write_iges(round.Shape(), path, true);
+}
+
+double write_sewn_rounded_box(const std::string& path) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(50, 40, 30).Shape();
+    BRepFilletAPI_MakeFillet round(box);
+    for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) round.Add(5.0, TopoDS::Edge(e.Current()));
+    BRepBuilderAPI_Sewing sewing(1e-3);
+    int k = 0;
+    for (TopExp_Explorer e(round.Shape(), TopAbs_FACE); e.More(); e.Next(), ++k) {
+        gp_Trsf t;
+        t.SetTranslation(gp_Vec(1e-4 * std::sin(k), 1e-4 * std::cos(1.7 * k), 1e-4 * std::sin(2.9 * k)));
+        sewing.Add(BRepBuilderAPI_Transform(e.Current(), t).Shape());
+    }
+    sewing.Perform();
+    BRep_Builder b;
+    TopoDS_Solid solid;
+    b.MakeSolid(solid);
+    for (TopExp_Explorer e(sewing.SewedShape(), TopAbs_SHELL); e.More(); e.Next()) {
+        b.Add(solid, e.Current());
+        break;
+    }
+    return write_iges(solid, path, true);
 }
 
 double write_torus_hole_on_seams_iges(const std::string& path) {

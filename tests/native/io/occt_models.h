@@ -82,6 +82,11 @@ double write_ball_hole_on_seam_iges(const std::string& path, double R, double r,
 // (IGES 186..., or STEP for a .stp path). Returns BRepGProp's area.
 double write_rounded_box(const std::string& path, double a, double b, double c, double r);
 
+// A 50 x 40 x 30 box rounded to radius 5, its faces moved apart by up to 1e-4 and sewn
+// again at 1e-3 (BRepBuilderAPI_Sewing): the corner octants' meridians lie 3e-5 off
+// their sphere's seam. B-rep mode (STEP for a .stp path). Returns BRepGProp's area.
+double write_sewn_rounded_box(const std::string& path);
+
 // A ball of radius R about the origin pierced from its centre by `holes` cylinders of
 // radius r along (cos a, sin a, 0.6), a = 2 pi i / holes (the first on the seam, which
 // it cuts in two), then turned 0.7 rad about (1, 1, 0). B-rep mode (IGES 186..., or

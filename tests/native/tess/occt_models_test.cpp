@@ -534,6 +534,10 @@ INSTANTIATE_TEST_SUITE_P(
         // round the rest of the sphere and 88 edges of plate_with_holes.stp were open,
         // until the coedge after the pole decided the side.
         Solid{"rounded_box", [](const std::string& p) { return test::write_rounded_box(p, 50, 30, 20, 4); }},
+        // Meridians a little off the seam: the coedges after the pole were placed from the
+        // one leaving it, a period away, and the octant became the rest of the sphere
+        // (unwrap_loop places them back from the loop's start).
+        Solid{"sewn_rounded_box", [](const std::string& p) { return test::write_sewn_rounded_box(p); }},
         Solid{"cone_apex_hole", [](const std::string& p) { return test::write_cone_apex_hole_iges(p, 30, 50, 4, true); }},
         Solid{"filleted_hole_block", [](const std::string& p) { return test::write_filleted_hole_block_iges(p); }},
         Solid{"torus_hole_on_seams", [](const std::string& p) { return test::write_torus_hole_on_seams_iges(p); }},
