@@ -193,7 +193,9 @@ struct LoopBuilder {
                 // the pole, where the loop turns), else the seam edge's other use.
                 const NurbsCurve2d& next = loop.coedges[(k + 1) % n].curve;
                 const Vector2d next_start = next.evaluate(next.domain().first);
-                const auto at_pole = [&](const Vector2d& uv) { return projector.free_at(wrap_into_domain(S, periods, uv), dir); };
+                const auto at_pole = [&](const Vector2d& uv) {
+                    return projector.free_at(wrap_into_domain(S, periods, uv), dir);
+                };
                 const bool settled_next = !flagged[(k + 1) % n] && !at_pole(next_start);
                 const Vector2d& meet = at_pole(prev_end) && settled_next ? next_start : prev_end;
                 if (at_pole(meet)) {

@@ -220,20 +220,37 @@ TEST(OcctModels, CornerOpenInUvButClosedIn3dKeepsItsFace) {
     std::filesystem::remove(path);
 }
 
+// A dx x dy x dz box placed twice (write_box_assembly_step): at t1, and turned 90°
+// about z, then moved by t2.
+struct BoxPair {
+    double dx = 10, dy = 4, dz = 2;
+    Eigen::Vector3d t1{100, 0, 0}, t2{0, 50, 7};
+
+    void write(const std::string& path) const { test::write_box_assembly_step(path, dx, dy, dz, t1, t2); }
+
+    // The two copies' boxes where the placements put them.
+    void expect_boxes(const Eigen::AlignedBox3d& first, const Eigen::AlignedBox3d& second) const {
+        EXPECT_TRUE(first.min().isApprox(t1, 1e-9));
+        EXPECT_TRUE(first.max().isApprox(t1 + Eigen::Vector3d(dx, dy, dz), 1e-9));
+        EXPECT_TRUE(second.min().isApprox(t2 + Eigen::Vector3d(-dy, 0, 0), 1e-9));
+        EXPECT_TRUE(second.max().isApprox(t2 + Eigen::Vector3d(0, dx, dz), 1e-9));
+    }
+};
+
 TEST(OcctModels, AssemblyPartPlacedTwiceIsOneBodyTwoInstances) {
     REQUIRE_OCCT();
-    const double dx = 10, dy = 4, dz = 2;
-    const Eigen::Vector3d t1(100, 0, 0), t2(0, 50, 7);
+    const BoxPair pair;
     const std::string path = temp_path("pair.step");
-    test::write_box_assembly_step(path, dx, dy, dz, t1, t2);
+    pair.write(path);
     const geom::Model model = io::read_model(path);
     ASSERT_EQ(model.bodies.size(), 1u);
     EXPECT_EQ(model.faces.size(), 6u);
     ASSERT_EQ(model.instances.size(), 2u);
     EXPECT_EQ(model.bodies[0].name, "block");
     // The first copy only moves; the second turns by 90° about z, then moves.
-    Eigen::Affine3d second = Eigen::Translation3d(t2) * Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitZ());
-    EXPECT_TRUE(model.instances[0].transform.matrix().isApprox(Eigen::Affine3d(Eigen::Translation3d(t1)).matrix(), 1e-9));
+    Eigen::Affine3d second = Eigen::Translation3d(pair.t2) * Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitZ());
+    EXPECT_TRUE(
+        model.instances[0].transform.matrix().isApprox(Eigen::Affine3d(Eigen::Translation3d(pair.t1)).matrix(), 1e-9));
     EXPECT_TRUE(model.instances[1].transform.matrix().isApprox(second.matrix(), 1e-9));
     ASSERT_EQ(model.instances[0].path.size(), 1u);
     EXPECT_EQ(model.instances[0].path[0], "pair");
@@ -245,11 +262,8 @@ TEST(OcctModels, AssemblyPartPlacedTwiceIsOneBodyTwoInstances) {
     for (size_t t = 0; t < result.mesh.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
             (result.mesh.face_ids[t] < 6 ? first : other).extend(result.mesh.positions[result.mesh.triangles[t][k]]);
-    EXPECT_TRUE(first.min().isApprox(t1, 1e-9));
-    EXPECT_TRUE(first.max().isApprox(t1 + Eigen::Vector3d(dx, dy, dz), 1e-9));
-    EXPECT_TRUE(other.min().isApprox(t2 + Eigen::Vector3d(-dy, 0, 0), 1e-9));
-    EXPECT_TRUE(other.max().isApprox(t2 + Eigen::Vector3d(0, dx, dz), 1e-9));
-    EXPECT_NEAR(mesh_area(result.mesh), 2 * 2 * (dx * dy + dy * dz + dx * dz), 1e-9);
+    pair.expect_boxes(first, other);
+    EXPECT_NEAR(mesh_area(result.mesh), 2 * 2 * (pair.dx * pair.dy + pair.dy * pair.dz + pair.dx * pair.dz), 1e-9);
     std::filesystem::remove(path);
 }
 
@@ -742,10 +756,9 @@ std::vector<Eigen::AlignedBox3d> instance_boxes(const geom::Model& model, std::s
 
 TEST(OwnStepReader, PlacesAPartTwiceAsOcctDoes) {
     REQUIRE_OCCT();
-    const double dx = 10, dy = 4, dz = 2;
-    const Eigen::Vector3d t1(100, 0, 0), t2(0, 50, 7);
+    const BoxPair pair;
     const std::string path = temp_path("own_pair.stp");
-    test::write_box_assembly_step(path, dx, dy, dz, t1, t2);
+    pair.write(path);
     const geom::Model own = io::read_step(path, own_reader());
     const geom::Model occt = io::read_step(path);
     ASSERT_EQ(own.bodies.size(), 1u);  // the part once
@@ -754,10 +767,7 @@ TEST(OwnStepReader, PlacesAPartTwiceAsOcctDoes) {
     expect_same_instances(own, occt, "pair");
     // Where the placements put the boxes: t1; turned 90° about z, then t2.
     const std::vector<Eigen::AlignedBox3d> boxes = instance_boxes(own, 6);
-    EXPECT_TRUE(boxes[0].min().isApprox(t1, 1e-9));
-    EXPECT_TRUE(boxes[0].max().isApprox(t1 + Eigen::Vector3d(dx, dy, dz), 1e-9));
-    EXPECT_TRUE(boxes[1].min().isApprox(t2 + Eigen::Vector3d(-dy, 0, 0), 1e-9));
-    EXPECT_TRUE(boxes[1].max().isApprox(t2 + Eigen::Vector3d(0, dx, dz), 1e-9));
+    pair.expect_boxes(boxes[0], boxes[1]);
     std::filesystem::remove(path);
 }
 
