@@ -5,11 +5,15 @@
 
 namespace trimkit::geom {
 
-// Four degree-1 coedges, each on the parameter interval [0, 1]:
-// (u0,v0) -> (u1,v0) -> (u1,v1) -> (u0,v1) -> (u0,v0), counter-clockwise in (u,v).
 Loop natural_boundary_loop(const NurbsSurface& surface) {
     const auto [u0, u1] = surface.domain_u();
     const auto [v0, v1] = surface.domain_v();
+    return rectangle_loop(u0, u1, v0, v1);
+}
+
+// Four degree-1 coedges, each on the parameter interval [0, 1]:
+// (u0,v0) -> (u1,v0) -> (u1,v1) -> (u0,v1) -> (u0,v0), counter-clockwise in (u,v).
+Loop rectangle_loop(double u0, double u1, double v0, double v1) {
     const Eigen::Vector2d corners[4] = {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}};
     Loop loop;
     loop.outer = true;

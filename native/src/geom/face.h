@@ -51,4 +51,7 @@ struct Face {
 // four line coedges.
 Loop natural_boundary_loop(const NurbsSurface& surface);
 
+// The counter-clockwise loop of four line coedges around [u0, u1] x [v0, v1].
+Loop rectangle_loop(double u0, double u1, double v0, double v1);
+
 }  // namespace trimkit::geom

@@ -350,10 +350,15 @@ double cover_closed_surface(const FaceLoopsContext& context, geom::Face& face, b
         if (iso > geom::kSameFoot * length && iso < kNearPoleShare * length && (near_pole < 0.0 || iso < near_pole))
             near_pole = iso;
     }
-    if (natural_outer) return near_pole;
-    if (place_loops_by_largest(face.loops, periods))
-        face.warnings.push_back("loops shifted by whole periods into the range of the loop that encloses them");
-    shift_loops_into_domain(face.loops, face.surface, periods);
+    if (natural_outer) {
+        if (!place_natural_seam(face.loops, face.surface, periods)) return near_pole;
+    } else {
+        if (join_winding_loops(face.loops, periods))
+            face.warnings.push_back("two loops winding around the closed surface joined into one across its seam");
+        if (place_loops_by_largest(face.loops, periods))
+            face.warnings.push_back("loops shifted by whole periods into the range of the loop that encloses them");
+        shift_loops_into_domain(face.loops, face.surface, periods);
+    }
     const auto [u0, u1] = face.surface.domain_u();
     const auto [v0, v1] = face.surface.domain_v();
     if (!cover_loops(face.surface, face.loops, periods, tol)) return near_pole;
@@ -416,6 +421,32 @@ void build_face_loops(const geom::NurbsSurface& S, const FaceLoopsContext& conte
         build(0.0);
         face.warnings.push_back(near_pole_warning(iso));
     }
+}
+
+bool holes_of_whole_surface(const geom::NurbsSurface& S, const geom::Face& face) {
+    const SurfacePeriods periods = closed_periods(S, closure_tolerance(S, 0.0));
+    if (!periods.any() || face.loops.empty()) return false;
+    const double size = surface_size(S);
+    for (int d = 0; d < 2; ++d) {
+        if (periods[d] > 0.0) continue;
+        const auto [a, b] = d == 0 ? S.domain_u() : S.domain_v();
+        Eigen::Vector2d at(0.5 * (S.domain_u().first + S.domain_u().second),
+                           0.5 * (S.domain_v().first + S.domain_v().second));
+        for (const double end : {a, b}) {
+            at[d] = end;
+            if (!geom::parameter_is_free(S, at, 1 - d, size)) return false;  // a boundary, not a pole
+        }
+    }
+    for (const geom::Loop& loop : face.loops) {
+        if (loop.coedges.empty()) return false;
+        const geom::NurbsCurve2d& first = loop.coedges.front().curve;
+        const geom::NurbsCurve2d& last = loop.coedges.back().curve;
+        const Eigen::Vector2d gap = last.evaluate(last.domain().second) - first.evaluate(first.domain().first);
+        for (int d = 0; d < 2; ++d)
+            if (periods[d] > 0.0 && std::fabs(gap[d]) > 0.5 * periods[d]) return false;  // winds around
+        if ((signed_area(loop) < 0.0) == face.reversed) return false;
+    }
+    return true;
 }
 
 void settle_outer_loop(geom::Face& face, const std::string& what) {

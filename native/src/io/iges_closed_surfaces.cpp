@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include <Eigen/Geometry>
 
+#include "geom/analytic_curves.h"
 #include "geom/extend_closed_surface.h"
 #include "geom/surface_projector.h"
 
@@ -206,7 +209,147 @@ void shift_loop(geom::Loop& loop, const Eigen::Vector2d& shift) {
         e.curve = e.curve.transformed(Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
 }
 
+Eigen::Vector2d loop_start(const geom::Loop& loop, std::size_t k) {
+    const geom::NurbsCurve2d& c = loop.coedges[k].curve;
+    return c.evaluate(c.domain().first);
+}
+
+Eigen::Vector2d loop_end(const geom::Loop& loop) {
+    const geom::NurbsCurve2d& c = loop.coedges.back().curve;
+    return c.evaluate(c.domain().second);
+}
+
+// Whole periods in direction d from the loop's start to its end (0: it closes).
+int winding(const geom::Loop& loop, int d, double period) {
+    if (loop.coedges.empty()) return 0;
+    return static_cast<int>(std::lround((loop_end(loop)[d] - loop_start(loop, 0)[d]) / period));
+}
+
+// Distance of a and b in d modulo the period.
+double periodic_gap(double a, double b, double period) { return std::fabs(std::remainder(b - a, period)); }
+
+// The loop made to start at coedge k: the coedges before it move to the end, shifted
+// by the loop's winding so that they still continue the chain.
+void start_loop_at(geom::Loop& loop, std::size_t k, const Eigen::Vector2d& winding_shift) {
+    for (std::size_t j = 0; j < k; ++j)
+        loop.coedges[j].curve = loop.coedges[j].curve.transformed(
+            Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(winding_shift)));
+    std::rotate(loop.coedges.begin(), loop.coedges.begin() + static_cast<long>(k), loop.coedges.end());
+}
+
+geom::Coedge bridge(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+    geom::Coedge e;
+    e.curve = geom::line_segment(from, to, 0.0, 1.0);
+    return e;
+}
+
+// One loop around the band between a (winding w = ±1 times in d) and b (winding -w):
+// each started at the pair of their vertices closest in d (modulo L), b shifted by
+// whole periods to face a's end, and two straight bridges across, a period apart.
+geom::Loop band_loop(geom::Loop a, geom::Loop b, int d, double L, int w) {
+    std::size_t ia = 0, ib = 0;
+    double best = L;
+    for (std::size_t i = 0; i < a.coedges.size(); ++i)
+        for (std::size_t j = 0; j < b.coedges.size(); ++j) {
+            const double g = periodic_gap(loop_start(a, i)[d], loop_start(b, j)[d], L);
+            if (g < best - 1e-9 * L) best = g, ia = i, ib = j;
+        }
+    Eigen::Vector2d wrap = Eigen::Vector2d::Zero();
+    wrap[d] = w * L;
+    start_loop_at(a, ia, wrap);
+    start_loop_at(b, ib, -wrap);
+    Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+    shift[d] = L * std::round((loop_end(a)[d] - loop_start(b, 0)[d]) / L);
+    shift_loop(b, shift);
+    geom::Loop band;
+    band.outer = true;
+    band.coedges = std::move(a.coedges);
+    band.coedges.push_back(bridge(loop_end(band), loop_start(b, 0)));
+    const Eigen::Vector2d a_start = loop_start(band, 0);
+    band.coedges.insert(band.coedges.end(), b.coedges.begin(), b.coedges.end());
+    band.coedges.push_back(bridge(loop_end(band), a_start));
+    return band;
+}
+
 }  // namespace
+
+bool join_winding_loops(std::vector<geom::Loop>& loops, const SurfacePeriods& periods) {
+    for (int d = 0; d < 2; ++d) {
+        const double L = periods[d];
+        if (!(L > 0.0)) continue;
+        std::vector<std::size_t> winding_loops;
+        for (std::size_t i = 0; i < loops.size(); ++i)
+            if (winding(loops[i], d, L) != 0) winding_loops.push_back(i);
+        if (winding_loops.size() != 2) continue;
+        const std::size_t keep = winding_loops[0], drop = winding_loops[1];
+        const int w = winding(loops[keep], d, L);
+        if (std::abs(w) != 1 || winding(loops[drop], d, L) != -w) continue;
+        loops[keep] = band_loop(std::move(loops[keep]), std::move(loops[drop]), d, L, w);
+        loops.erase(loops.begin() + static_cast<long>(drop));
+        for (std::size_t i = 0; i < loops.size(); ++i) loops[i].outer = i == keep;
+        return true;
+    }
+    return false;
+}
+
+namespace {
+
+// The middle of the widest gap between the intervals on a circle of length L (from a),
+// or nullopt when they cover it; the intervals' starts are taken modulo L.
+std::optional<double> widest_gap_middle(std::vector<std::pair<double, double>> intervals, double a, double L) {
+    for (auto& [lo, hi] : intervals) {
+        const double start = a + std::fmod(std::fmod(lo - a, L) + L, L);
+        hi = start + (hi - lo), lo = start;
+    }
+    std::sort(intervals.begin(), intervals.end());
+    double best = 0.0, middle = a;
+    double reach = -std::numeric_limits<double>::infinity();  // the farthest end, wrapped past a
+    for (const auto& interval : intervals) reach = std::max(reach, interval.second - L);
+    for (const auto& [lo, hi] : intervals) {
+        if (lo - reach > best) best = lo - reach, middle = 0.5 * (lo + reach);
+        reach = std::max(reach, hi);
+    }
+    if (!(best > 0.0)) return std::nullopt;
+    return middle;
+}
+
+}  // namespace
+
+bool place_natural_seam(std::vector<geom::Loop>& loops, const geom::NurbsSurface& surface,
+                        const SurfacePeriods& periods) {
+    if (loops.size() < 2) return false;
+    double lo[2] = {surface.domain_u().first, surface.domain_v().first};
+    double hi[2] = {surface.domain_u().second, surface.domain_v().second};
+    bool moved = false;
+    for (int d = 0; d < 2; ++d) {
+        const double L = periods[d];
+        if (!(L > 0.0)) continue;
+        std::vector<std::pair<double, double>> ranges;
+        bool crosses = false;
+        for (std::size_t i = 1; i < loops.size(); ++i) {
+            const Eigen::AlignedBox2d box = loop_box(loops[i]);
+            ranges.emplace_back(box.min()[d], box.max()[d]);
+            const double k = std::floor((box.max()[d] - lo[d]) / L);  // the seam below the box's top
+            crosses |= box.min()[d] < lo[d] + (k - kOutsideDomain) * L;
+        }
+        double s = lo[d];
+        if (crosses) {
+            const std::optional<double> gap = widest_gap_middle(ranges, lo[d], L);
+            if (!gap) continue;
+            s = *gap;
+        }
+        for (std::size_t i = 1; i < loops.size(); ++i) {
+            Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+            shift[d] = L * std::ceil((s - ranges[i - 1].first) / L - kOutsideDomain);
+            shift_loop(loops[i], shift);
+            moved |= shift[d] != 0.0;
+        }
+        moved |= s != lo[d];
+        lo[d] = s, hi[d] = s + L;
+    }
+    if (moved) loops[0] = geom::rectangle_loop(lo[0], hi[0], lo[1], hi[1]);
+    return moved;
+}
 
 bool place_loops_by_largest(std::vector<geom::Loop>& loops, const SurfacePeriods& periods) {
     if (!periods.any() || loops.size() < 2) return false;

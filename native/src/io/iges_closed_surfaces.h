@@ -48,6 +48,23 @@ bool unwrap_loop(geom::Loop& loop, const geom::NurbsSurface& surface, const Surf
 // by -w periods. Returns the iso-curve's length, or -1 if nothing moved.
 double settle_winding(geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods);
 
+// A band of a closed surface (a cylinder between two circles, a cone's chamfer) may
+// be bounded by two loops that each wind once around it, the opposite ways, and no
+// seam edge (STEP from Parasolid: one closed circle per loop): neither bounds a region
+// alone. Joins the two into one loop (band_loop: the second shifted by whole periods
+// to face the first, both bridged across by two straight coedges a period apart, the
+// same curve on the surface run each way). Returns true if loops were joined.
+bool join_winding_loops(std::vector<geom::Loop>& loops, const SurfacePeriods& periods);
+
+// The natural outer loop (loops[0]) of a face on a closed surface with holes only (a
+// ball drilled three times: STEP gives the holes and no outer bound) runs along the
+// seam, which a hole may cross. Per closed direction whose seam a hole crosses, the
+// natural loop is moved to the middle of the widest gap between the holes (modulo
+// the period) over one period, and the holes by whole periods into it (the surface is
+// to be extended over them, cover_loops). Returns true if loops moved.
+bool place_natural_seam(std::vector<geom::Loop>& loops, const geom::NurbsSurface& surface,
+                        const SurfacePeriods& periods);
+
 // Each loop unwrapped from its own start may sit whole periods away from the loop
 // that encloses it on the surface (a hole at u in [0.2, 1.4] beside an outer loop
 // unwrapped onto [-2π, 0]). Shifts every loop by whole periods so that the centre

@@ -27,6 +27,18 @@ constexpr int kEdgeSamples = 16;
 // Relative distance below which an edge's two vertex points are one (a closed edge).
 constexpr double kSameVertex = 1e-9;
 
+// A face with no FACE_OUTER_BOUND whose loops are all holes on a surface without
+// boundary (holes_of_whole_surface) is the whole surface less the holes where OCCT's
+// reader makes it so (ShapeFix_Face adds the natural bound): when the face marks its
+// poles with VERTEX_LOOPs (Parasolid's balls), or on a sphere or torus with more than
+// one hole. A single loop on a sphere or torus stays the region it encloses
+// (bug28414_bug_toroidal_surface.stp), as OCCT takes it.
+bool whole_surface_less_holes(const StepGeometry::Surface& S, const geom::Face& face, int pole_bounds) {
+    const bool sphere_or_torus = S.kind == "sphere" || S.kind == "torus";
+    if (pole_bounds == 0 && !(sphere_or_torus && face.loops.size() > 1)) return false;
+    return holes_of_whole_surface(S.nurbs, face);
+}
+
 class Topology {
 public:
     Topology(const StepPart21& file, const StepGeometry& geometry, geom::Model& model, ReadMonitor& monitor)
@@ -165,11 +177,15 @@ int Topology::add_face(const StepInstance& step_face) {
         std::vector<std::vector<BoundarySegment>> loops;
         BoundaryHint hint;
         bool first_is_outer = false;
+        int pole_bounds = 0;
         for (const StepValue& b : bounds.items) {
             const StepInstance& bound = instance(step_face, b, "bound");
             const bool outer = bound.record("FACE_OUTER_BOUND") != nullptr;
             std::vector<BoundarySegment> segments = loop_segments(bound, surface_ref.integer, hint);
-            if (segments.empty()) continue;  // a VERTEX_LOOP: a pole, which the loops need not name
+            if (segments.empty()) {  // a VERTEX_LOOP: a pole, which the loops need not name
+                ++pole_bounds;
+                continue;
+            }
             if (outer && !first_is_outer) {
                 loops.insert(loops.begin(), std::move(segments));
                 first_is_outer = true;
@@ -180,14 +196,21 @@ int Topology::add_face(const StepInstance& step_face) {
         const StepGeometry::Surface S = geometry_.surface(surface_ref.integer, hint);
         geom::Face face;
         face.surface_kind = S.kind;
-        face.reversed = !flag(step_face, *r, 3, "same sense");
+        // Our NURBS of a SURFACE_OF_REVOLUTION has (curve parameter, angle) for STEP's
+        // (angle, curve parameter): its Su x Sv is the STEP normal reversed.
+        face.reversed = !flag(step_face, *r, 3, "same sense") != S.map.swap;
         face.name = name.kind == StepValue::Kind::kString ? name.text : std::string();
         face.source_entity = static_cast<int>(std::min<long long>(step_face.id, std::numeric_limits<int>::max()));
         FaceLoopsContext context;
         context.closure_tolerance = closure_tolerance(S.nurbs, 0.0);
         context.map_to_nurbs = [this, &S](const geom::NurbsCurve2d& c) { return geometry_.map_pcurve(S, c); };
         build_face_loops(S.nurbs, context, hint, loops, false, first_is_outer, face);
-        if (first_is_outer) {
+        const bool natural_outer = !first_is_outer && whole_surface_less_holes(S, face, pole_bounds);
+        if (natural_outer) {
+            build_face_loops(S.nurbs, context, hint, loops, true, false, face);
+            face.warnings.push_back("no outer bound and every bound a hole on a closed surface: the face is the "
+                                    "whole surface less the holes");
+        } else if (first_is_outer) {
             settle_outer_loop(face, "bound");
         } else if (!face.loops.empty()) {
             // No FACE_OUTER_BOUND (allowed by Part 42): the loop of largest extent is outer.

@@ -24,6 +24,7 @@
 #include "io/read_step.h"
 #include "tess/collapsed_side.h"
 #include "tess/tessellate_model.h"
+#include "step_text.h"
 #include "test_support.h"
 
 namespace trimkit {
@@ -564,32 +565,9 @@ INSTANTIATE_TEST_SUITE_P(
 // "projected from model space" warning; a wrong one is checked against the 3D curve,
 // projected instead (with a warning) and the face keeps its area.
 
-// A STEP real with all its digits.
-std::string step_real(double x) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17E", x);
-    return buffer;
-}
-
-// A whole Part 21 file around `data`, one OPEN_SHELL of the ADVANCED_FACE #64.
-std::string step_file(const std::string& data) {
-    return "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\nFILE_NAME('t.stp','',(''),(''),'','','');\n"
-           "FILE_SCHEMA(('AUTOMOTIVE_DESIGN'));\nENDSEC;\nDATA;\n" +
-           data +
-           "#65=OPEN_SHELL('',(#64));\n#66=SHELL_BASED_SURFACE_MODEL('',(#65));\n"
-           "#99=(GEOMETRIC_REPRESENTATION_CONTEXT(2) PARAMETRIC_REPRESENTATION_CONTEXT() "
-           "REPRESENTATION_CONTEXT('2D SPACE',''));\nENDSEC;\nEND-ISO-10303-21;\n";
-}
-
-// The cylinder #5 of radius r about z, its bottom circle #8 and top circle #9 (height
-// h), the 2D unit vectors #31 (along u) and #33 (along v), a 3D unit vector #10 along z.
-std::string cylinder_entities(double r, double h) {
-    return "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=DIRECTION('',(0.,0.,1.));\n#3=DIRECTION('',(1.,0.,0.));\n"
-           "#4=AXIS2_PLACEMENT_3D('',#1,#2,#3);\n#5=CYLINDRICAL_SURFACE('',#4," + step_real(r) + ");\n"
-           "#6=CARTESIAN_POINT('',(0.,0.," + step_real(h) + "));\n#7=AXIS2_PLACEMENT_3D('',#6,#2,#3);\n"
-           "#8=CIRCLE('',#4," + step_real(r) + ");\n#9=CIRCLE('',#7," + step_real(r) + ");\n#10=VECTOR('',#2,1.);\n"
-           "#30=DIRECTION('',(1.,0.));\n#31=VECTOR('',#30,1.);\n#32=DIRECTION('',(0.,1.));\n#33=VECTOR('',#32,1.);\n";
-}
+using test::cylinder_entities;
+using test::step_file;
+using test::step_real;
 
 // The 2D line #id through (u, v) along #vector, its DEFINITIONAL_REPRESENTATION #id+2
 // and PCURVE #id+3 on the cylinder #5.
