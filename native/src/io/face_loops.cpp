@@ -355,6 +355,8 @@ double cover_closed_surface(const FaceLoopsContext& context, geom::Face& face, b
     } else {
         if (join_winding_loops(face.loops, periods))
             face.warnings.push_back("two loops winding around the closed surface joined into one across its seam");
+        else if (close_winding_loop_at_pole(face.loops, face.surface, periods, face.reversed))
+            face.warnings.push_back("a loop winding around the closed surface closed at its pole");
         if (place_loops_by_largest(face.loops, periods))
             face.warnings.push_back("loops shifted by whole periods into the range of the loop that encloses them");
         shift_loops_into_domain(face.loops, face.surface, periods);

@@ -292,6 +292,45 @@ bool join_winding_loops(std::vector<geom::Loop>& loops, const SurfacePeriods& pe
     return false;
 }
 
+bool close_winding_loop_at_pole(std::vector<geom::Loop>& loops, const geom::NurbsSurface& surface,
+                                const SurfacePeriods& periods, bool reversed) {
+    const double size = surface.control_box().diagonal().norm();
+    const Eigen::Vector2d middle(0.5 * (surface.domain_u().first + surface.domain_u().second),
+                                 0.5 * (surface.domain_v().first + surface.domain_v().second));
+    for (int d = 0; d < 2; ++d) {
+        const int e = 1 - d;
+        const double L = periods[d];
+        if (!(L > 0.0) || periods[e] > 0.0) continue;
+        std::vector<std::size_t> winding_loops;
+        for (std::size_t i = 0; i < loops.size(); ++i)
+            if (winding(loops[i], d, L) != 0) winding_loops.push_back(i);
+        if (winding_loops.size() != 1) continue;
+        geom::Loop& loop = loops[winding_loops[0]];
+        const int w = winding(loop, d, L);
+        if (std::abs(w) != 1) continue;
+        const auto [lo, hi] = domain(surface, e);
+        const auto pole_at = [&](double end) {
+            Eigen::Vector2d at = middle;
+            at[e] = end;
+            return geom::parameter_is_free(surface, at, d, size);
+        };
+        const bool pole_lo = pole_at(lo), pole_hi = pole_at(hi);
+        if (!pole_lo && !pole_hi) continue;
+        // The face lies left of the loop in (u,v) (right on a reversed face): +v of a
+        // loop along +u, -u of one along +v.
+        const bool to_hi = pole_lo && pole_hi ? ((d == 0 ? w : -w) > 0) != reversed : pole_hi;
+        const Eigen::Vector2d start = loop_start(loop, 0), end = loop_end(loop);
+        Eigen::Vector2d end_at_pole = end, start_at_pole = start;
+        end_at_pole[e] = start_at_pole[e] = to_hi ? hi : lo;
+        loop.coedges.push_back(bridge(end, end_at_pole));
+        loop.coedges.push_back(bridge(end_at_pole, start_at_pole));
+        loop.coedges.push_back(bridge(start_at_pole, start));
+        for (std::size_t i = 0; i < loops.size(); ++i) loops[i].outer = i == winding_loops[0];
+        return true;
+    }
+    return false;
+}
+
 namespace {
 
 // The middle of the widest gap between the intervals on a circle of length L (from a),

@@ -56,6 +56,17 @@ double settle_winding(geom::Loop& loop, const geom::NurbsSurface& surface, const
 // same curve on the surface run each way). Returns true if loops were joined.
 bool join_winding_loops(std::vector<geom::Loop>& loops, const SurfacePeriods& periods);
 
+// A cap of a closed surface (a hemisphere, a cone up to its apex) may be bounded by one
+// loop winding once around it, the pole marked by a VERTEX_LOOP or not at all (STEP
+// from Parasolid: the equator circle alone): it bounds a region only with the pole.
+// When exactly one loop winds in a direction d and an end of the other direction is a
+// pole, the loop is closed there: a seam line to the pole, the pole's (degenerate) iso
+// line back one period, and the seam line back (one curve, run both ways). With a
+// pole at both ends (a sphere) the face's side of the loop picks the end: left of it
+// in (u,v), right on a `reversed` face. Returns true if a loop was closed.
+bool close_winding_loop_at_pole(std::vector<geom::Loop>& loops, const geom::NurbsSurface& surface,
+                                const SurfacePeriods& periods, bool reversed);
+
 // The natural outer loop (loops[0]) of a face on a closed surface with holes only (a
 // ball drilled three times: STEP gives the holes and no outer bound) runs along the
 // seam, which a hole may cross. Per closed direction whose seam a hole crosses, the

@@ -271,7 +271,15 @@ TranslatedSurface elementary(const Handle(Geom_Surface)& s, const Eigen::Aligned
         // OCCT's v runs along the ruling; cone_patch's along the axis: w = v cos α.
         const double alpha = cone->SemiAngle(), c = std::cos(alpha);
         const auto [a, b] = angle_range(s0, s1);
-        const auto [v0, v1] = linear_range(t0, t1);
+        auto [v0, v1] = linear_range(t0, t1);
+        // Not past the apex (radius R + v sin α = 0) where the face reaches it (within the
+        // pad, which also takes the trims' bounding box's rounding): the padded
+        // range through it gave cells on both nappes, whose exact bound (revolution_error)
+        // does not hold across the axis, and the generic one split a cone with its apex into
+        // 2048 columns at 0.002 of its size (cone_with_apex.stp: 7035 triangles, OCCT 1089).
+        const double apex = -cone->RefRadius() / std::sin(alpha), pad = t0 - v0;
+        if (apex > v0 && apex <= t0 + pad) v0 = apex;
+        if (apex < v1 && apex >= t1 - pad) v1 = apex;
         out.nurbs = geom::cone_patch(O, Z, X, cone->RefRadius(), alpha, a, one_turn(a, b), v0 * c, v1 * c)
                         .transformed(frame_of(cone->Position()));
         out.kind = "cone";
