@@ -68,12 +68,12 @@ void build_face_loops(const geom::NurbsSurface& S, const FaceLoopsContext& conte
                       const std::vector<std::vector<BoundarySegment>>& loops, bool natural_outer,
                       bool first_is_outer, geom::Face& face);
 
-// True when the face is the whole of a surface without boundary less holes: the
-// surface is closed in u or v and, in the other direction, closed too or pinched to a
-// pole at both ends (a ball, a torus, a surface of revolution from pole to pole), and
-// every loop of `face` (as build_face_loops made them from S, in the file's directions) closes in (u,v)
-// and runs as a hole: clockwise, counter-clockwise on a reversed face. STEP gives
-// such a face (a ball drilled three times) its holes and no outer bound.
+// True when the face is the whole of a surface without boundary less holes: S is
+// closed in u or v and, in the other direction, closed too or pinched to a pole at
+// both ends (a ball, a torus, a surface of revolution from pole to pole), and every
+// loop of `face` (as build_face_loops made them from S, in the file's directions)
+// closes in (u,v) and runs as a hole: clockwise, counter-clockwise on a reversed
+// face. STEP gives such a face (a ball drilled three times) its holes and no outer bound.
 bool holes_of_whole_surface(const geom::NurbsSurface& S, const geom::Face& face);
 
 // Loop 1, which the file declares outer, unless another loop encloses it
