@@ -262,6 +262,13 @@ NurbsCurve<Dim> NurbsCurve<Dim>::transformed(
     return result;
 }
 
+template <int Dim>
+NurbsCurve<Dim> NurbsCurve<Dim>::translated(const Point& shift) const {
+    NurbsCurve result = *this;
+    for (Point& P : result.P_) P += shift;
+    return result;
+}
+
 template class NurbsCurve<2>;
 template class NurbsCurve<3>;
 

@@ -54,6 +54,8 @@ public:
 
     // The curve under an affine transform (exact for NURBS); Dim 2 or 3.
     NurbsCurve transformed(const Eigen::Transform<double, Dim, Eigen::Affine>& T) const;
+    // The curve moved by `shift` (every control point; exact).
+    NurbsCurve translated(const Point& shift) const;
 
 private:
     // Pw = (w P, w) per control point, and the curve made from such points.

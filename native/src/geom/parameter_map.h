@@ -27,6 +27,9 @@ struct AxisMap {
 
 struct ParameterMap {
     bool swap = false;  // (s, t) -> (t, s) before the axis maps
+    // The NURBS's Su x Sv against the file's surface normal: exchanging u and v turns it
+    // around (a face on the surface is reversed with it, and its loops' sense in (u,v)).
+    bool flips_normal() const { return swap; }
     AxisMap u, v;
 
     Eigen::Vector2d apply(Eigen::Vector2d st) const;

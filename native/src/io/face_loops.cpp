@@ -153,7 +153,7 @@ struct LoopBuilder {
         Vector2d whole = Vector2d::Zero();
         for (int d = 0; d < 2; ++d)
             if (periods[d] > 0.0) whole[d] = periods[d] * std::round(shift[d] / periods[d]);
-        if (!whole.isZero()) c = c.transformed(Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(whole)));
+        if (!whole.isZero()) c = c.translated(whole);
     }
 
     // A curve projected along a seam continues the loop on the side where the
@@ -441,11 +441,8 @@ bool holes_of_whole_surface(const geom::NurbsSurface& S, const geom::Face& face)
     }
     for (const geom::Loop& loop : face.loops) {
         if (loop.coedges.empty()) return false;
-        const geom::NurbsCurve2d& first = loop.coedges.front().curve;
-        const geom::NurbsCurve2d& last = loop.coedges.back().curve;
-        const Eigen::Vector2d gap = last.evaluate(last.domain().second) - first.evaluate(first.domain().first);
         for (int d = 0; d < 2; ++d)
-            if (periods[d] > 0.0 && std::fabs(gap[d]) > 0.5 * periods[d]) return false;  // winds around
+            if (periods[d] > 0.0 && winding(loop, d, periods[d]) != 0) return false;
         if ((signed_area(loop) < 0.0) == face.reversed) return false;
     }
     return true;

@@ -39,7 +39,30 @@ void extend_by_samples(const geom::NurbsCurve2d& c, Eigen::AlignedBox2d* box) {
     for (int k = 0; k <= n; ++k) box->extend(c.evaluate(a + (b - a) * k / n));
 }
 
+Eigen::Vector2d loop_start(const geom::Loop& loop, std::size_t k) {
+    const geom::NurbsCurve2d& c = loop.coedges[k].curve;
+    return c.evaluate(c.domain().first);
+}
+
+Eigen::Vector2d loop_end(const geom::Loop& loop) {
+    const geom::NurbsCurve2d& c = loop.coedges.back().curve;
+    return c.evaluate(c.domain().second);
+}
+
+// The loops that wind around in direction d (period L), by index.
+std::vector<std::size_t> winding_loops(const std::vector<geom::Loop>& loops, int d, double L) {
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < loops.size(); ++i)
+        if (winding(loops[i], d, L) != 0) out.push_back(i);
+    return out;
+}
+
 }  // namespace
+
+int winding(const geom::Loop& loop, int d, double period) {
+    if (loop.coedges.empty()) return 0;
+    return static_cast<int>(std::lround((loop_end(loop)[d] - loop_start(loop, 0)[d]) / period));
+}
 
 SurfacePeriods closed_periods(const geom::NurbsSurface& s, double tolerance) {
     SurfacePeriods p;
@@ -122,7 +145,7 @@ bool unwrap_loop(geom::Loop& loop, const geom::NurbsSurface& surface, const Surf
     const auto move = [&](std::size_t k, const Eigen::Vector2d& shift) {
         if (shift.isZero()) return;
         geom::NurbsCurve2d& c = loop.coedges[k].curve;
-        c = c.transformed(Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
+        c = c.translated(shift);
         moved = true;
     };
     std::size_t first_free = n;  // the first coedge that starts where a parameter is free
@@ -151,9 +174,7 @@ double settle_winding(geom::Loop& loop, const geom::NurbsSurface& surface, const
     for (int d = 0; d < 2; ++d) {
         const double L = periods[d];
         if (!(L > 0.0)) continue;
-        const geom::NurbsCurve2d& last = loop.coedges.back().curve;
-        const geom::NurbsCurve2d& first = loop.coedges.front().curve;
-        const double w = std::round((last.evaluate(last.domain().second)[d] - first.evaluate(first.domain().first)[d]) / L);
+        const double w = winding(loop, d, L);
         if (w == 0.0) continue;
         // Joint j lies between coedge j and j + 1 (j = n - 1: the loop's closing joint).
         auto iso_length = [&](std::size_t j) {
@@ -189,8 +210,7 @@ double settle_winding(geom::Loop& loop, const geom::NurbsSurface& surface, const
         Eigen::Vector2d shift = Eigen::Vector2d::Zero();
         shift[d] = -w * L;
         for (std::size_t k = best + 1; k < n; ++k)
-            loop.coedges[k].curve = loop.coedges[k].curve.transformed(
-                Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
+            loop.coedges[k].curve = loop.coedges[k].curve.translated(shift);
         moved = best_length;
     }
     return moved;
@@ -206,23 +226,7 @@ Eigen::AlignedBox2d loop_box(const geom::Loop& loop) {
 
 void shift_loop(geom::Loop& loop, const Eigen::Vector2d& shift) {
     for (geom::Coedge& e : loop.coedges)
-        e.curve = e.curve.transformed(Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(shift)));
-}
-
-Eigen::Vector2d loop_start(const geom::Loop& loop, std::size_t k) {
-    const geom::NurbsCurve2d& c = loop.coedges[k].curve;
-    return c.evaluate(c.domain().first);
-}
-
-Eigen::Vector2d loop_end(const geom::Loop& loop) {
-    const geom::NurbsCurve2d& c = loop.coedges.back().curve;
-    return c.evaluate(c.domain().second);
-}
-
-// Whole periods in direction d from the loop's start to its end (0: it closes).
-int winding(const geom::Loop& loop, int d, double period) {
-    if (loop.coedges.empty()) return 0;
-    return static_cast<int>(std::lround((loop_end(loop)[d] - loop_start(loop, 0)[d]) / period));
+        e.curve = e.curve.translated(shift);
 }
 
 // Distance of a and b in d modulo the period.
@@ -232,8 +236,7 @@ double periodic_gap(double a, double b, double period) { return std::fabs(std::r
 // by the loop's winding so that they still continue the chain.
 void start_loop_at(geom::Loop& loop, std::size_t k, const Eigen::Vector2d& winding_shift) {
     for (std::size_t j = 0; j < k; ++j)
-        loop.coedges[j].curve = loop.coedges[j].curve.transformed(
-            Eigen::Transform<double, 2, Eigen::Affine>(Eigen::Translation2d(winding_shift)));
+        loop.coedges[j].curve = loop.coedges[j].curve.translated(winding_shift);
     std::rotate(loop.coedges.begin(), loop.coedges.begin() + static_cast<long>(k), loop.coedges.end());
 }
 
@@ -277,11 +280,9 @@ bool join_winding_loops(std::vector<geom::Loop>& loops, const SurfacePeriods& pe
     for (int d = 0; d < 2; ++d) {
         const double L = periods[d];
         if (!(L > 0.0)) continue;
-        std::vector<std::size_t> winding_loops;
-        for (std::size_t i = 0; i < loops.size(); ++i)
-            if (winding(loops[i], d, L) != 0) winding_loops.push_back(i);
-        if (winding_loops.size() != 2) continue;
-        const std::size_t keep = winding_loops[0], drop = winding_loops[1];
+        const std::vector<std::size_t> winders = winding_loops(loops, d, L);
+        if (winders.size() != 2) continue;
+        const std::size_t keep = winders[0], drop = winders[1];
         const int w = winding(loops[keep], d, L);
         if (std::abs(w) != 1 || winding(loops[drop], d, L) != -w) continue;
         loops[keep] = band_loop(std::move(loops[keep]), std::move(loops[drop]), d, L, w);
@@ -301,11 +302,9 @@ bool close_winding_loop_at_pole(std::vector<geom::Loop>& loops, const geom::Nurb
         const int e = 1 - d;
         const double L = periods[d];
         if (!(L > 0.0) || periods[e] > 0.0) continue;
-        std::vector<std::size_t> winding_loops;
-        for (std::size_t i = 0; i < loops.size(); ++i)
-            if (winding(loops[i], d, L) != 0) winding_loops.push_back(i);
-        if (winding_loops.size() != 1) continue;
-        geom::Loop& loop = loops[winding_loops[0]];
+        const std::vector<std::size_t> winders = winding_loops(loops, d, L);
+        if (winders.size() != 1) continue;
+        geom::Loop& loop = loops[winders[0]];
         const int w = winding(loop, d, L);
         if (std::abs(w) != 1) continue;
         const auto [lo, hi] = domain(surface, e);
@@ -325,7 +324,7 @@ bool close_winding_loop_at_pole(std::vector<geom::Loop>& loops, const geom::Nurb
         loop.coedges.push_back(bridge(end, end_at_pole));
         loop.coedges.push_back(bridge(end_at_pole, start_at_pole));
         loop.coedges.push_back(bridge(start_at_pole, start));
-        for (std::size_t i = 0; i < loops.size(); ++i) loops[i].outer = i == winding_loops[0];
+        for (std::size_t i = 0; i < loops.size(); ++i) loops[i].outer = i == winders[0];
         return true;
     }
     return false;

@@ -30,6 +30,10 @@ SurfacePeriods closed_periods(const geom::NurbsSurface& s, double tolerance);
 Eigen::Vector2d wrap_into_domain(const geom::NurbsSurface& s, const SurfacePeriods& periods,
                                  Eigen::Vector2d uv);
 
+// Whole periods in direction d from the loop's first start to its last end: 0 when it
+// closes in (u,v), else how often it winds around the closed direction (period > 0).
+int winding(const geom::Loop& loop, int d, double period);
+
 // Shifts coedges by whole periods so that each starts within half a period of
 // where the previous one ends (the first stays, unless it runs by a seam: then the
 // one farthest from the seams), except across a joint at a pole of

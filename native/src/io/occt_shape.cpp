@@ -123,8 +123,7 @@ geom::Face convert_face(const TopoDS_Face& located, const TopTools_IndexedMapOfS
     out.surface = loc.IsIdentity() ? std::move(translated.nurbs)
                                    : translated.nurbs.transformed(to_eigen(loc.Transformation()));
     out.surface_kind = translated.kind;
-    // Exchanging u and v turns Su x Sv around (and the loops' sense in (u,v)).
-    if (translated.map.swap) out.reversed = !out.reversed;
+    if (translated.map.flips_normal()) out.reversed = !out.reversed;
     const auto [u0, u1] = out.surface.domain_u();
     const auto [v0, v1] = out.surface.domain_v();
     const double refit_tol = kPcurveRefitShare * std::max(u1 - u0, v1 - v0);

@@ -196,9 +196,7 @@ int Topology::add_face(const StepInstance& step_face) {
         const StepGeometry::Surface S = geometry_.surface(surface_ref.integer, hint);
         geom::Face face;
         face.surface_kind = S.kind;
-        // Our NURBS of a SURFACE_OF_REVOLUTION has (curve parameter, angle) for STEP's
-        // (angle, curve parameter): its Su x Sv is the STEP normal reversed.
-        face.reversed = !flag(step_face, *r, 3, "same sense") != S.map.swap;
+        face.reversed = !flag(step_face, *r, 3, "same sense") != S.map.flips_normal();
         face.name = name.kind == StepValue::Kind::kString ? name.text : std::string();
         face.source_entity = static_cast<int>(std::min<long long>(step_face.id, std::numeric_limits<int>::max()));
         FaceLoopsContext context;

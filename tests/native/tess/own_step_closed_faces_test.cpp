@@ -18,6 +18,7 @@
 
 #include "io/read_options.h"
 #include "io/read_step.h"
+#include "mesh/mesh.h"
 #include "step_text.h"
 #include "tess/tessellate_model.h"
 
@@ -62,12 +63,6 @@ Eigen::Vector3d triangle_normal(const mesh::Mesh& m, std::size_t t) {
 Eigen::Vector3d triangle_centre(const mesh::Mesh& m, std::size_t t) {
     const auto& v = m.triangles[t];
     return (m.positions[v[0]] + m.positions[v[1]] + m.positions[v[2]]) / 3.0;
-}
-
-double mesh_area(const mesh::Mesh& m) {
-    double area = 0;
-    for (std::size_t t = 0; t < m.triangles.size(); ++t) area += triangle_normal(m, t).norm();
-    return area;
 }
 
 // Triangles whose normal points towards `centre` (inward on a convex shape around it,
@@ -129,7 +124,7 @@ TEST_P(SeamlessBand, IsWholeWithOutwardNormals) {
     EXPECT_TRUE(result.failed_faces.empty());
     ASSERT_FALSE(result.mesh.triangles.empty());
     const double area = 2 * kPi * r * h;
-    EXPECT_NEAR(mesh_area(result.mesh), area, area_bound(area, r, 1, 4 * kPi * r, T));
+    EXPECT_NEAR(mesh::surface_area(result.mesh), area, area_bound(area, r, 1, 4 * kPi * r, T));
     EXPECT_EQ(inward_triangles(result.mesh, Eigen::Vector3d::Zero(), true), 0);
     // The bridges across the band are one curve run both ways and weld: the open edges
     // are the two circles' chords, as many as the distinct points on them.
@@ -247,7 +242,7 @@ TEST_P(HoledBall, IsTheWholeBallLessItsHolesWhereOcctMakesItSo) {
         perimeter += 2 * kPi * R * std::sin(h.half_angle);
     }
     const double area = c.whole ? 4 * kPi * R * R - caps : caps;
-    EXPECT_NEAR(mesh_area(result.mesh), area, area_bound(area, R, 2, perimeter, T));
+    EXPECT_NEAR(mesh::surface_area(result.mesh), area, area_bound(area, R, 2, perimeter, T));
     EXPECT_EQ(inward_triangles(result.mesh, Eigen::Vector3d::Zero(), false), 0);
     // Every triangle on the face's side of the circles.
     int wrong_side = 0;
@@ -321,7 +316,7 @@ TEST_P(Cap, IsTheCapOnItsSideWithinTheBoundAndFewTriangles) {
     const double slant = std::hypot(kConeR, kConeH);
     const double area = c.cone ? kPi * kConeR * slant : 2 * kPi * kCapR * kCapR;
     const double r = c.cone ? kConeR : kCapR, perimeter = 2 * kPi * r;
-    EXPECT_NEAR(mesh_area(result.mesh), area, area_bound(area, r, c.cone ? 1 : 2, perimeter, T));
+    EXPECT_NEAR(mesh::surface_area(result.mesh), area, area_bound(area, r, c.cone ? 1 : 2, perimeter, T));
     const Eigen::Vector3d inside = c.cone ? Eigen::Vector3d(0, 0, -0.5 * kConeH) : Eigen::Vector3d::Zero();
     EXPECT_EQ(inward_triangles(result.mesh, inside, c.cone), 0);
     int wrong_side = 0;
