@@ -102,20 +102,35 @@ private:
             from_b.push_back({ring[0], ring[k + 1], ring[k + 2]});
             from_a.push_back({ring[n - 1], ring[k], ring[k + 1]});
         }
-        out.push_back(std::move(from_a));
-        out.push_back(std::move(from_b));
+        for (auto* fan : {&from_a, &from_b})
+            if (std::none_of(out.begin(), out.end(), [&](const auto& c) { return same_triangles(c, *fan); }))
+                out.push_back(std::move(*fan));
         return out;
+    }
+
+    // The same triangles, each possibly rotated, in any order (a ring of three
+    // vertices gives one triangle three times).
+    static bool same_triangles(std::vector<std::array<int, 3>> a, std::vector<std::array<int, 3>> b) {
+        auto canonical = [](std::vector<std::array<int, 3>>& ts) {
+            for (auto& t : ts) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+            std::sort(ts.begin(), ts.end());
+        };
+        canonical(a);
+        canonical(b);
+        return a == b;
     }
 
     // Of the triangulations within the bound, the one that loses least area
     // (cell_area_loss.h): the area budget pays for what a removal loses. Empty if none is.
+    // The loss is the cheaper test, so a candidate losing no less than the best so far
+    // is never bounded.
     std::vector<std::array<int, 3>> least_losing(std::vector<std::vector<std::array<int, 3>>> candidates) {
         double least = std::numeric_limits<double>::infinity();
         std::vector<std::array<int, 3>> best;
         for (auto& candidate : candidates) {
-            if (!acceptable(candidate)) continue;
             const double loss = area_loss(candidate);
-            if (loss < least) least = loss, best = std::move(candidate);
+            if (!(loss < least) || !acceptable(candidate)) continue;
+            least = loss, best = std::move(candidate);
         }
         return best;
     }
