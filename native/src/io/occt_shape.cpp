@@ -32,6 +32,7 @@
 
 #include "geom/error.h"
 #include "io/occt_geometry.h"
+#include "io/occt_sewing.h"
 #include "io/occt_support.h"
 
 namespace trimkit::io {
@@ -316,8 +317,15 @@ geom::Face checked_face(const TopoDS_Face& face, const TopTools_IndexedMapOfShap
 
 }  // namespace
 
-std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& shape, const ShapeStyle& style,
+std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& part, const ShapeStyle& style,
                            const std::string& fallback_name, int& face_number, ReadMonitor* monitor) {
+    const SewnShape sewn = sew_loose_faces(part);
+    const TopoDS_Shape& shape = sewn.shape;
+    if (sewn.sewn)
+        model.warnings.push_back((fallback_name.empty() ? std::string("a part") : "part '" + fallback_name + "'") +
+                                 ": its faces did not share their edges; sewn by BRepBuilderAPI_Sewing (free edges " +
+                                 std::to_string(sewn.free_edges_before) + " -> " +
+                                 std::to_string(sewn.free_edges_after) + ")");
     TopTools_IndexedMapOfShape edge_map;
     TopExp::MapShapes(shape, TopAbs_EDGE, edge_map);
     const int edge_offset = static_cast<int>(model.edges.size());
@@ -334,7 +342,8 @@ std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& shape, const 
             // checked_face catches signals in its own scopes; the colour lookup (XCAF) in one here.
             geom::Face converted = checked_face(face, edge_map, edge_offset);
             converted.source_entity = face_number;
-            if (style.color) converted.color = occt_guarded([&] { return style.color(face, model); });
+            if (style.color)
+                converted.color = occt_guarded([&] { return style.color(original_face(sewn, face), model); });
             model.faces.push_back(std::move(converted));
             occurrence_face.push_back(static_cast<int>(model.faces.size()) - 1);
             continue;

@@ -26,13 +26,14 @@ struct ShapeStyle {
     std::function<std::string(const TopoDS_Shape&)> name;
 };
 
-// Adds the faces of `shape` to `model` and its solids and shells (and, when none,
+// Adds the faces of `part` to `model` (sewn first when they share no edges:
+// occt_sewing.h; a warning says so) and its solids and shells (and, when none,
 // one body of all its faces) as bodies named after `fallback_name` when the style
 // gives none; returns the indices of the new bodies. Faces that cannot be
 // translated are left out with a warning in Model::warnings naming them
 // ("face 12 skipped: ..."), counting faces from `first_face_number`.
 // monitor: checked before each face (ReadStopped propagates; it is not a skipped face).
-std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& shape, const ShapeStyle& style,
+std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& part, const ShapeStyle& style,
                            const std::string& fallback_name, int& face_number, ReadMonitor* monitor = nullptr);
 
 }  // namespace trimkit::io

@@ -26,7 +26,9 @@
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepTools.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRep_Builder.hxx>
@@ -427,6 +429,20 @@ double write_sewn_rounded_box(const std::string& path) {
         break;
     }
     return write_iges(solid, path, true);
+}
+
+double write_loose_face_rounded_box(const std::string& path) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(50, 40, 30).Shape();
+    BRepFilletAPI_MakeFillet round(box);
+    for (TopExp_Explorer e(box, TopAbs_EDGE); e.More(); e.Next()) round.Add(5.0, TopoDS::Edge(e.Current()));
+    BRep_Builder b;
+    TopoDS_Shell shell;
+    b.MakeShell(shell);
+    for (TopExp_Explorer e(round.Shape(), TopAbs_FACE); e.More(); e.Next())
+        b.Add(shell, BRepBuilderAPI_Copy(e.Current()).Shape());
+    if (is_step_path(path)) return write_iges(shell, path, true);
+    if (!BRepTools::Write(shell, path.c_str())) throw std::runtime_error("cannot write " + path);
+    return area_of(shell);
 }
 
 double write_torus_hole_on_seams_iges(const std::string& path) {

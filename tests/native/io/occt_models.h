@@ -87,6 +87,10 @@ double write_rounded_box(const std::string& path, double a, double b, double c, 
 // their sphere's seam. B-rep mode (STEP for a .stp path). Returns BRepGProp's area.
 double write_sewn_rounded_box(const std::string& path);
 
+// The faces of a 50 x 40 x 30 box rounded to radius 5, each copied on its own (edges
+// and vertices of its own, as Spatial writes a SHELL_BASED_SURFACE_MODEL) and put in
+// one shell unsewn; STEP (AP214) for a .stp path, else .brep. Returns BRepGProp's area.
+double write_loose_face_rounded_box(const std::string& path);
 // A ball of radius R about the origin pierced from its centre by `holes` cylinders of
 // radius r along (cos a, sin a, 0.6), a = 2 pi i / holes (the first on the seam, which
 // it cuts in two), then turned 0.7 rad about (1, 1, 0). B-rep mode (IGES 186..., or

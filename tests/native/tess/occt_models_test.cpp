@@ -303,6 +303,31 @@ bool any_warning(const geom::Model& model, const std::string& part) {
 // OCCT's IGES B-rep writer flags the hole at u = pi as the lateral face's outer loop;
 // the loop that runs round the other hole (on the seam) and along both end circles
 // encloses it. Trusting the flag kept 3 % of the face.
+// A shell whose faces have edges of their own (Spatial's STEP surface models; OCCT's
+// transfer splits it into a shell per face) is sewn by OCCT on reading: one closed
+// body with shared edges, meshed closed, its area OCCT's; a warning says it was sewn.
+TEST(OcctModels, ShellOfLooseFacesIsSewnIntoOneClosedBody) {
+    REQUIRE_OCCT();
+    const std::string solid_path = temp_path("rounded_solid.stp");
+    test::write_rounded_box(solid_path, 50, 40, 30, 5);
+    const std::size_t solid_edges = io::read_model(solid_path).edges.size();
+    std::filesystem::remove(solid_path);
+    for (const char* name : {"loose_faces.stp", "loose_faces.brep"}) {
+        const std::string path = temp_path(name);
+        const double area = test::write_loose_face_rounded_box(path);
+        const geom::Model model = io::read_model(path);
+        EXPECT_EQ(model.faces.size(), 26u) << name;  // 6 sides, 12 fillets, 8 corners
+        ASSERT_EQ(model.bodies.size(), 1u) << name;
+        EXPECT_TRUE(model.bodies[0].closed) << name;
+        EXPECT_EQ(model.edges.size(), solid_edges) << name;  // the solid's own edges, each shared
+        EXPECT_TRUE(std::any_of(model.warnings.begin(), model.warnings.end(), [](const std::string& w) {
+            return w.find("sewn by BRepBuilderAPI_Sewing") != std::string::npos;
+        })) << name;
+        expect_whole(model, 0.01, area, name);
+        std::filesystem::remove(path);
+    }
+}
+
 TEST(OcctModels, IgesBrepCylinderWhoseOuterFlagNamesAHoleKeepsItsLateralFace) {
     REQUIRE_OCCT();
     const std::string path = temp_path("cross_hole.igs");
