@@ -30,6 +30,7 @@
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include "geom/curve_box.h"
 #include "geom/error.h"
 #include "io/occt_geometry.h"
 #include "io/occt_sewing.h"
@@ -51,14 +52,28 @@ constexpr double kLoopGapMax = 1e-4;
 // of the domain: the loop is bridged by a straight (u,v) segment, which across a
 // period jump (0 to 2 pi on a closed surface, 3D gap 0) would cut the face in two.
 constexpr double kUvGapClosedIn3d = 1e-2;
+// trim_range's boxes are tight to this share of each curve's size.
+constexpr double kTrimRangeTolerance = 1e-10;
 
-// The (u, v) box of the face's p-curves in OCCT's parameters (tight: AddOptimal).
+// The (u, v) box of the face's p-curves in OCCT's parameters, tight: geom::curve_box
+// of the translated curves (OCCT's AddOptimal, a particle-swarm search per B-spline
+// curve, took 40 % of a .brep file's reading), AddOptimal for kinds without a translation.
 Eigen::AlignedBox2d trim_range(const TopoDS_Face& face) {
     Bnd_Box2d box;
     for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
         double first = 0, last = 0;
         const Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(TopoDS::Edge(it.Current()), face, first, last);
-        if (!c.IsNull()) BndLib_Add2dCurve::AddOptimal(c, first, last, 0.0, box);
+        if (c.IsNull()) continue;
+        try {
+            const geom::NurbsCurve2d curve = translate_curve(c, first, last);
+            const geom::NurbsCurve2d::Box hull = curve.control_box();
+            const Eigen::AlignedBox2d tight = geom::curve_box(curve, kTrimRangeTolerance * hull.diagonal().norm());
+            box.Update(tight.min().x(), tight.min().y(), tight.max().x(), tight.max().y());
+        } catch (const UntranslatedKind&) {
+            BndLib_Add2dCurve::AddOptimal(c, first, last, 0.0, box);
+        } catch (const geom::InvalidInput&) {
+            BndLib_Add2dCurve::AddOptimal(c, first, last, 0.0, box);
+        }
     }
     double u0 = 0, v0 = 0, u1 = 0, v1 = 0;
     if (box.IsVoid()) {

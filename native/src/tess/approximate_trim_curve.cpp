@@ -9,11 +9,16 @@
 #include "geom/error.h"
 #include "geom/segment_distance.h"
 #include "tess/derivative_bounds.h"
-#include "tess/homogeneous_bezier.h"
+#include "geom/homogeneous_bezier.h"
 #include "tess/lift_trim_curve.h"
 #include "tess/simplify_trim_polyline.h"
 
 namespace trimkit::tess {
+
+using geom::bezier_piece;
+using geom::de_casteljau;
+using geom::project;
+using geom::split_bezier;
 
 namespace {
 

@@ -11,9 +11,14 @@
 
 #include "geom/bspline_basis.h"
 #include "geom/knot_vector.h"
-#include "tess/homogeneous_bezier.h"
+#include "geom/homogeneous_bezier.h"
 
 namespace trimkit::tess {
+
+using geom::bezier_piece;
+using geom::de_casteljau;
+using geom::project;
+using geom::split_bezier;
 
 namespace {
 

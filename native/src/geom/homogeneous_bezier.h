@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-namespace trimkit::tess {
+namespace trimkit::geom {
 
 // The homogeneous point at s (not projected).
 template <class V>
@@ -53,4 +53,4 @@ Eigen::Matrix<double, V::RowsAtCompileTime - 1, 1> project(const V& h) {
     return h.template head<d>() / h(d);
 }
 
-}  // namespace trimkit::tess
+}  // namespace trimkit::geom
