@@ -390,11 +390,12 @@ public:
         f.Z = Vector3d::UnitZ();
         if (!two && !p.unset(1)) f.Z = direction(referred(p, 1, "axis", {"DIRECTION"}));
         const std::size_t ref = three ? 2 : 1;
-        Vector3d v;
-        if (type != "AXIS1_PLACEMENT" && !p.unset(ref)) {
+        Vector3d v = Vector3d::Zero();
+        if (type != "AXIS1_PLACEMENT" && !p.unset(ref))
             v = direction(referred(p, ref, "ref_direction", {"DIRECTION"}));
-            if (v.cross(f.Z).norm() <= geom::kAnalyticTolerance) p.fail("ref_direction is parallel to the axis");
-        } else {
+        // A ref_direction along the axis (ul_to252.step's planes: axis -x, ref +x) is
+        // taken as unset, as OCCT's reader does, rather than losing the face.
+        if (v.cross(f.Z).norm() <= geom::kAnalyticTolerance) {
             // ISO 10303-42 first_proj_axis without arg.
             v = f.Z.cross(Vector3d::UnitX()).norm() <= geom::kAnalyticTolerance ? Vector3d::UnitY()
                                                                                  : Vector3d::UnitX();

@@ -96,13 +96,15 @@ void write_helical_strip_brep(const std::string& path, double R, double k, doubl
     if (!BRepTools::Write(face, path.c_str())) throw std::runtime_error("cannot write " + path);
 }
 
-void write_damaged_cylinder_face_brep(const std::string& path, double R, double h, double gap) {
+void write_damaged_cylinder_face_brep(const std::string& path, double R, double h, double gap,
+                                      double vertex_tolerance) {
     Handle(Geom_CylindricalSurface) cylinder = new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), R);
     BRep_Builder b;
     const double q = M_PI / 2;
     const gp_Pnt p00(R, 0, 0), p10(0, R, 0), p11(0, R, h), p01(R, 0, h);
     TopoDS_Vertex v00, v10, v11, v01;
-    for (auto [v, p] : {std::pair{&v00, p00}, {&v10, p10}, {&v11, p11}, {&v01, p01}}) b.MakeVertex(*v, p, 1e-7);
+    for (auto [v, p] : {std::pair{&v00, p00}, {&v10, p10}, {&v11, p11}, {&v01, p01}})
+        b.MakeVertex(*v, p, vertex_tolerance);
     const gp_Circ bottom(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), gp_Dir(1, 0, 0)), R);
     const gp_Circ top(gp_Ax2(gp_Pnt(0, 0, h), gp_Dir(0, 0, 1), gp_Dir(1, 0, 0)), R);
     TopoDS_Face face;

@@ -29,7 +29,9 @@ void write_helical_strip_brep(const std::string& path, double R, double k, doubl
 // The cylinder face over [0, π/2] x [0, h] built edge by edge, one of whose p-curves
 // is damaged: `gap` > 0 shifts the p-curve of the bottom arc by gap in v (its ends no
 // longer meet the neighbours' in (u,v)); gap == 0 leaves that edge without a p-curve.
-void write_damaged_cylinder_face_brep(const std::string& path, double R, double h, double gap);
+// The vertices get `vertex_tolerance`.
+void write_damaged_cylinder_face_brep(const std::string& path, double R, double h, double gap,
+                                      double vertex_tolerance = 1e-7);
 
 // A planar B-spline face: the bilinear surface S(u, v) = (L u, L v, 0) on [0, 1]^2,
 // trimmed by the square [-m, 1 + m]^2 in (u, v), past the surface's domain by m on

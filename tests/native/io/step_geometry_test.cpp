@@ -89,6 +89,17 @@ TEST(StepGeometry, PlacementOrthonormalisesRefDirectionAndDefaultsPerIso) {
     expect_near(g.direction(11), Vector3d(0, 0, 1), 0);
 }
 
+// A ref_direction along the axis (ul_to252.step: axis -x, ref +x) is taken as unset,
+// as OCCT's reader does: the frame ISO's first_proj_axis gives, not a lost face.
+TEST(StepGeometry, RefDirectionAlongTheAxisIsTakenAsUnset) {
+    const StepPart21 f = parse(frame("0.,0.,0.", "-1.,0.,0.", "1.,0.,0."));
+    const StepGeometry g(f);
+    const Eigen::Affine3d M = g.placement(10);
+    expect_near(M.linear().col(2), Vector3d(-1, 0, 0), 0);
+    expect_near(M.linear().col(0), Vector3d(0, 1, 0), 1e-15);  // axis along x: (0,1,0)
+    expect_near(M.linear().col(1), Vector3d(0, 0, -1), 1e-15);  // z cross x
+}
+
 // ---- Curves ---------------------------------------------------------------------------
 
 // Circle about (1,2,3) in the placement's XY plane, radius 2.

@@ -185,6 +185,25 @@ TEST(OcctModels, GappedAndMissingPcurvesAreHealedByShapeFix) {
     }
 }
 
+// A p-curve that misses its neighbours by less than the vertices' tolerance (the
+// file's promise that the ends meet; ul_to252.step's lead profiles, coordinates
+// written to 3 decimals: 5.7e-4 apart under tolerances of 3.9e-4) is a closed joint,
+// as OCCT takes it, however large against the face: the face was skipped at a
+// relative gap of 1e-3 / 4 = 2.5e-4 (limit 1e-4).
+TEST(OcctModels, PcurveGapWithinTheVertexToleranceKeepsItsFace) {
+    REQUIRE_OCCT();
+    const double R = 10, h = 4, T = 0.005, gap = 3e-3;
+    const std::string path = temp_path("gap_within_tolerance.brep");
+    test::write_damaged_cylinder_face_brep(path, R, h, gap, 2 * gap);
+    const geom::Model model = io::read_model(path);
+    ASSERT_EQ(model.faces.size(), 1u) << (model.warnings.empty() ? "" : model.warnings[0]);
+    const tess::TessellationResult result = mesh_at(model, T);
+    ASSERT_TRUE(result.failed_faces.empty()) << result.failed_faces[0].reason;
+    // The bottom's p-curve runs gap above z = 0: the face is that much shorter.
+    EXPECT_NEAR(mesh_area(result.mesh), R * kPi / 2 * (h - gap), R * kPi / 2 * h * T / R);
+    std::filesystem::remove(path);
+}
+
 TEST(OcctModels, BsplineFaceTrimmedPastItsDomainKeepsTheWholeTrim) {
     REQUIRE_OCCT();
     const double L = 10, m = 0.05, T = 0.001;
