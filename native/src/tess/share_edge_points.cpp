@@ -123,6 +123,7 @@ SharedEdgePolyline share_edge_points(const geom::NurbsSurface& S, const geom::Co
             const double lo = std::max(t_prev, ts[std::max(best - 1, 0)]);
             const double hi = ts[std::min(best + 1, m)];
             t = std::clamp(ts[best], lo, hi);
+            double last_step = INFINITY;
             for (int it = 0; it < kNewtonIterations; ++it) {
                 Eigen::Vector3d g, g1, g2;
                 G.derivatives(t, &g, &g1, &g2);
@@ -132,7 +133,10 @@ SharedEdgePolyline share_edge_points(const geom::NurbsSurface& S, const geom::Co
                 const double t_new = std::clamp(t - f / df, lo, hi);
                 const double step = std::abs(t_new - t);
                 t = t_new;
-                if (step <= kNewtonStepRelative * (tb - ta)) break;
+                // Converged, or at the rounding floor of f: a step no shorter than the
+                // last one (14 % of hammer.iges's points ran all 30 iterations there).
+                if (step <= kNewtonStepRelative * (tb - ta) || step >= last_step) break;
+                last_step = step;
             }
             k_prev = std::max(k_prev, best - 1);
         }
