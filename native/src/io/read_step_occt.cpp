@@ -298,6 +298,12 @@ private:
     Handle(TDocStd_Document) doc_;
 };
 
+// OCCT read the file but transferred no face: trimkit's own reader may still take it
+// (ADVANCED_BREP_REPRESENTATION without product structure: NIST's switcharm.step).
+struct OcctTransfersNoFaces : geom::ReadError {
+    using geom::ReadError::ReadError;
+};
+
 // Progress: parsing (ReadFile reports nothing) up to kParseShare, the transfer (with
 // OCCT's healing) up to kTransferShare, the translation after it.
 constexpr double kParseShare = 0.3;
@@ -340,7 +346,7 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     monitor.check();  // a user break ends the transfer early, with or without shapes
     if (!transferred) {
         const std::string why = occt_guarded([&] { return read_failures(reader); });
-        throw geom::ReadError(path, 0, "Open CASCADE transfers no shape from the STEP file" +
+        throw OcctTransfersNoFaces(path, 0, "Open CASCADE transfers no shape from the STEP file" +
                                            (why.empty() ? std::string() : ": " + why));
     }
     StepStyles styles(doc);
@@ -364,7 +370,7 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     if (model.faces.empty()) {
         for (const std::string& w : model.warnings)
             if (w.rfind("face ", 0) == 0) throw geom::ReadError(path, 0, "no face of the STEP file converts (" + w + ")");
-        throw geom::ReadError(path, 0, "the STEP file has no exact faces (B-rep surfaces); tessellated-only or "
+        throw OcctTransfersNoFaces(path, 0, "the STEP file has no exact faces (B-rep surfaces); tessellated-only or "
                                        "wireframe STEP is not supported");
     }
     return model;
@@ -385,9 +391,22 @@ geom::Model read_step(const std::string& path, const ReadOptions& options) {
             not_own = e.what();
         }
     }
-    geom::Model model = read_step_occt(path, options);
-    if (!not_own.empty()) model.warnings.push_back("read through Open CASCADE: " + not_own);
-    return model;
+    try {
+        geom::Model model = read_step_occt(path, options);
+        if (!not_own.empty()) model.warnings.push_back("read through Open CASCADE: " + not_own);
+        return model;
+    } catch (const OcctTransfersNoFaces& occt) {
+        if (options.step_reader != StepReader::kOcct) throw;
+        try {
+            geom::Model model = read_step_own(path, options);
+            model.warnings.insert(model.warnings.begin(), occt.reason() + "; read by trimkit's own STEP reader");
+            return model;
+        } catch (const ReadStopped&) {
+            throw;
+        } catch (const std::exception&) {
+            throw occt;  // the own reader's reason would hide OCCT's
+        }
+    }
 }
 
 geom::Model read_step_occt(const std::string& path, const ReadOptions& options) {

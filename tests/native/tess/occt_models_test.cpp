@@ -693,6 +693,35 @@ geom::Model read_own_and_check_area(const std::string& name, const std::string& 
     return model;
 }
 
+// A file OCCT parses but transfers nothing from (NIST's switcharm.step, 1995: an
+// ADVANCED_BREP_REPRESENTATION and no product structure) is read by the own reader
+// on the default path, with a warning that says so; the face is the quarter cylinder.
+TEST(OwnStepReader, TakesTheFilesOcctTransfersNothingFrom) {
+    REQUIRE_OCCT();
+    const double r = 10, h = 20;
+    std::string text = quarter_cylinder_step(r, h, 0);
+    const std::size_t products = text.find("#9001="), end = text.find("ENDSEC;", products);
+    ASSERT_NE(products, std::string::npos);
+    text.replace(products, end - products, "#9013=ADVANCED_BREP_REPRESENTATION('',(#66),#99);\n");
+    const std::string path = temp_path("no_products.stp");
+    {
+        std::ofstream out(path);
+        out << text;
+    }
+    io::ReadOptions occt_only;
+    occt_only.step_reader = io::StepReader::kOcct;
+    const geom::Model model = io::read_step(path, occt_only);
+    std::filesystem::remove(path);
+    ASSERT_EQ(model.faces.size(), 1u);
+    ASSERT_FALSE(model.warnings.empty());
+    EXPECT_NE(model.warnings[0].find("Open CASCADE transfers no shape"), std::string::npos) << model.warnings[0];
+    EXPECT_NE(model.warnings[0].find("own STEP reader"), std::string::npos) << model.warnings[0];
+    const double T = 1e-3, area = r * 0.5 * kPi * h;
+    const tess::TessellationResult result = mesh_at(model, T);
+    EXPECT_TRUE(result.failed_faces.empty());
+    EXPECT_NEAR(mesh_area(result.mesh), area, area * T / r + curved_boundary_bound(kPi * r + 2 * h, T));
+}
+
 TEST(OwnStepReader, TakesTheFilesPcurvesOnACylinderQuarter) {
     const double r = 10, h = 20;
     const geom::Model model = read_own_and_check_area("pc_quarter.stp", quarter_cylinder_step(r, h, 0), r * 0.5 * kPi * h,
