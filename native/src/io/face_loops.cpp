@@ -340,6 +340,9 @@ double cover_closed_surface(const FaceLoopsContext& context, geom::Face& face, b
         geom::Loop& loop = face.loops[i];
         unwrap_loop(loop, face.surface, periods);
         if (natural_outer && i == 0) continue;
+        if (close_loop_along_its_pole(loop, face.surface, periods))
+            face.warnings.push_back("loop " + std::to_string(i + 1 - (natural_outer ? 1 : 0)) +
+                                    " closed by its edge along the pole, which the file leaves out");
         const double iso = settle_winding(loop, face.surface, periods);
         if (iso < 0.0) continue;
         face.warnings.push_back("loop " + std::to_string(i + 1 - (natural_outer ? 1 : 0)) +

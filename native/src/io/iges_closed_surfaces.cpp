@@ -24,6 +24,9 @@ constexpr int kRangeSamples = 16;
 // the gap from the closing joint (ties keep the loop as the file has it).
 constexpr int kIsoSamples = 64;
 constexpr double kShorterIso = 0.5;
+// close_loop_along_its_pole: ends on one iso-line within this share of the domain
+// (sw2022's pole at u = 1.1e-8 of [0, pi]), and turns this close to whole ones.
+constexpr double kSameIsoLine = 1e-6;
 
 std::pair<double, double> domain(const geom::NurbsSurface& s, int d) {
     return d == 0 ? s.domain_u() : s.domain_v();
@@ -288,6 +291,25 @@ bool join_winding_loops(std::vector<geom::Loop>& loops, const SurfacePeriods& pe
         loops[keep] = band_loop(std::move(loops[keep]), std::move(loops[drop]), d, L, w);
         loops.erase(loops.begin() + static_cast<long>(drop));
         for (std::size_t i = 0; i < loops.size(); ++i) loops[i].outer = i == keep;
+        return true;
+    }
+    return false;
+}
+
+bool close_loop_along_its_pole(geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods) {
+    if (loop.coedges.empty()) return false;
+    const Eigen::Vector2d start = loop_start(loop, 0), end = loop_end(loop);
+    const double size = surface.control_box().diagonal().norm();
+    for (int d = 0; d < 2; ++d) {
+        const int e = 1 - d;
+        const double L = periods[d];
+        if (!(L > 0.0)) continue;
+        const auto [lo, hi] = domain(surface, e);
+        const double turns = (end[d] - start[d]) / L;
+        const bool same_line = std::abs(end[e] - start[e]) <= kSameIsoLine * (hi - lo);
+        const bool whole_turns = std::abs(turns - std::round(turns)) <= kSameIsoLine;
+        if (!same_line || whole_turns || !geom::parameter_is_free(surface, end, d, size)) continue;
+        loop.coedges.push_back(bridge(end, start));
         return true;
     }
     return false;

@@ -42,6 +42,15 @@ int winding(const geom::Loop& loop, int d, double period);
 // on one side and back down on the other). Returns true if any moved.
 bool unwrap_loop(geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods);
 
+// A loop whose ends lie apart along a pole's iso-line (a degenerate iso-line: both
+// ends are the pole's one point) by other than whole periods lacks its edge along the
+// pole, which files leave out (SolidWorks IGES: half a spherical cap, from the pole
+// along one meridian, round half the parallel and back up the other, its ends half a
+// period apart): closed by that edge. Without it the half period read as a winding
+// (lround(-0.5) = -1), and close_winding_loop_at_pole took the far side of the
+// sphere, 3.4 times the face. Returns true if the loop was closed.
+bool close_loop_along_its_pole(geom::Loop& loop, const geom::NurbsSurface& surface, const SurfacePeriods& periods);
+
 // A loop that winds around a closed direction (after unwrap_loop its end lies
 // a whole number w of periods from its start) bounds a region only together
 // with a full turn along an iso-curve: the tessellator bridges the gap where it

@@ -16,6 +16,9 @@
 
 #include <Eigen/Geometry>
 
+#include "geom/analytic_curves.h"
+#include "geom/analytic_surfaces.h"
+#include "io/face_loops.h"
 #include "io/read_options.h"
 #include "io/read_step.h"
 #include "mesh/mesh.h"
@@ -340,6 +343,88 @@ INSTANTIATE_TEST_SUITE_P(HemispheresAndCones, Cap,
                                            CapCase{"cone_apex_occt", true, false, true, false},
                                            CapCase{"cone_occt", true, false, false, false}),
                          [](const ::testing::TestParamInfo<CapCase>& info) { return std::string(info.param.name); });
+
+// ---- Half a spherical cap: from the pole down one meridian, round half the parallel
+// and back up: the loop's ends meet at the pole only in 3D, half a period apart in
+// (u,v) (SolidWorks writes such faces without the pole's edge). Read as a winding loop
+// (lround(-0.5) = -1) it was closed at the sphere's far pole: 3.4 times the face.
+
+constexpr double kHalfCapR = 10, kHalfCapAngle = kPi / 3;  // cap down to 60 degrees from the pole
+
+std::string half_cap_step() {
+    const double R = kHalfCapR, rho = R * std::sin(kHalfCapAngle), z = R * std::cos(kHalfCapAngle);
+    std::string text = "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=DIRECTION('',(0.,0.,1.));\n"
+                       "#3=DIRECTION('',(1.,0.,0.));\n#4=AXIS2_PLACEMENT_3D('',#1,#2,#3);\n"
+                       "#5=SPHERICAL_SURFACE('',#4," + step_real(R) + ");\n";
+    // The meridian circle of the plane y = 0: angle 90 degrees at the pole, 30 at a, 150 at b.
+    text += "#6=DIRECTION('',(0.,-1.,0.));\n#7=AXIS2_PLACEMENT_3D('',#1,#6,#3);\n#8=CIRCLE('',#7," + step_real(R) + ");\n";
+    text += step_point(10, {0, 0, z}) + "#11=AXIS2_PLACEMENT_3D('',#10,#2,#3);\n#9=CIRCLE('',#11," + step_real(rho) + ");\n";
+    text += step_point(20, {0, 0, R}) + step_point(21, {rho, 0, z}) + step_point(22, {-rho, 0, z}) +
+            "#23=VERTEX_POINT('',#20);\n#24=VERTEX_POINT('',#21);\n#25=VERTEX_POINT('',#22);\n"
+            "#30=EDGE_CURVE('',#24,#23,#8,.T.);\n#31=EDGE_CURVE('',#24,#25,#9,.T.);\n#32=EDGE_CURVE('',#23,#25,#8,.T.);\n"
+            "#40=ORIENTED_EDGE('',*,*,#30,.F.);\n#41=ORIENTED_EDGE('',*,*,#31,.T.);\n#42=ORIENTED_EDGE('',*,*,#32,.F.);\n"
+            "#50=EDGE_LOOP('',(#40,#41,#42));\n#51=FACE_OUTER_BOUND('',#50,.T.);\n";
+    return step_file(text + "#64=ADVANCED_FACE('',(#51),#5,.T.);\n");
+}
+
+class HalfCap : public ::testing::TestWithParam<bool> {};
+
+TEST_P(HalfCap, IsTheQuarterOfTheSphereItBounds) {
+    const bool own = GetParam();
+    if (!own && !io::step_supported()) GTEST_SKIP() << "trimkit built without Open CASCADE";
+    const geom::Model model = read_with(own ? io::StepReader::kOwn : io::StepReader::kOcct, "half_cap.stp", half_cap_step());
+    ASSERT_EQ(model.faces.size(), 1u);
+    const double T = 0.01, R = kHalfCapR;
+    const tess::TessellationResult result = mesh_of(model, T);
+    EXPECT_TRUE(result.failed_faces.empty());
+    // Half the cap's area 2 pi R^2 (1 - cos a); its boundary: two 60-degree meridian arcs
+    // and half the parallel.
+    const double area = kPi * R * R * (1 - std::cos(kHalfCapAngle));
+    const double perimeter = 2 * R * kHalfCapAngle + kPi * R * std::sin(kHalfCapAngle);
+    EXPECT_NEAR(mesh::surface_area(result.mesh), area, area_bound(area, R, 2, perimeter, T));
+    int outside = 0;  // every triangle in the cap's half y >= 0 above its parallel
+    for (std::size_t t = 0; t < result.mesh.triangles.size(); ++t) {
+        const Eigen::Vector3d c = triangle_centre(result.mesh, t);
+        outside += c.y() < -T || c.z() < R * std::cos(kHalfCapAngle) - T;
+    }
+    EXPECT_EQ(outside, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(OwnAndOcct, HalfCap, ::testing::Bool(),
+                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "own" : "occt"; });
+
+// The same half cap as IGES gives it (sw2022_part1.igs, SolidWorks): a surface of
+// revolution of a semicircle from pole to pole, the loop of model-space curves from
+// the pole down one meridian, round half the parallel and up the other, and no edge
+// along the pole. Built by build_face_loops as the IGES reader does.
+TEST(HalfCapFromIges, LoopWithoutItsPoleEdgeIsClosedAlongThePole) {
+    const double R = kHalfCapR, a = kHalfCapAngle;
+    const Eigen::Vector3d O = Eigen::Vector3d::Zero(), X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(),
+                          Z = Eigen::Vector3d::UnitZ();
+    // Generatrix angle 0 at the north pole, pi at the south pole, in the plane y = 0.
+    const geom::NurbsSurface S = geom::surface_of_revolution(geom::circular_arc(O, Z, X, R, 0, kPi), O, Z, 0, 2 * kPi);
+    const std::vector<geom::NurbsCurve3d> down{geom::circular_arc(O, Z, X, R, 0, a)};
+    const std::vector<geom::NurbsCurve3d> round{geom::circular_arc(R * std::cos(a) * Z, X, Y, R * std::sin(a), 0, kPi)};
+    const std::vector<geom::NurbsCurve3d> up = io::reversed_chain({geom::circular_arc(O, Z, -X, R, 0, a)});
+    // Run as the file runs it: clockwise in (generatrix, angle), down the meridian at pi.
+    std::vector<io::BoundarySegment> loop(3);
+    loop[0].model = io::reversed_chain(up), loop[1].model = io::reversed_chain(round),
+    loop[2].model = io::reversed_chain(down);
+    io::BoundaryHint hint;
+    for (const auto* c : {&down, &round, &up}) io::add_points(&hint, *c);
+    io::FaceLoopsContext context;
+    context.closure_tolerance = io::closure_tolerance(S, 0.0);
+    geom::Face face;
+    face.surface_kind = "revolution";
+    io::build_face_loops(S, context, hint, {loop}, false, true, face);
+    geom::Model model;
+    model.faces.push_back(face);
+    const double T = 0.01;
+    const tess::TessellationResult result = mesh_of(model, T);
+    EXPECT_TRUE(result.failed_faces.empty());
+    const double area = kPi * R * R * (1 - std::cos(a)), perimeter = 2 * R * a + kPi * R * std::sin(a);
+    EXPECT_NEAR(mesh::surface_area(result.mesh), area, area_bound(area, R, 2, perimeter, T));
+}
 
 }  // namespace
 }  // namespace trimkit
