@@ -1,5 +1,6 @@
 #include "io/iges_file.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -15,6 +16,7 @@ namespace {
 // letter in column 73, the sequence number in 74-80. Parameter lines keep
 // columns 1-64 for data and 66-72 for the directory back pointer.
 constexpr int kSectionColumn = 72;     // 0-based column of the section letter
+constexpr std::size_t kRecordWidth = 80;  // columns of a fixed-format record
 constexpr int kParameterDataWidth = 64;
 constexpr int kGlobalDataWidth = 72;
 // Lines without a section letter that are tolerated (with a warning) before the
@@ -55,6 +57,20 @@ RawLine classify_line(const std::string& text, int line_number) {
     out.data = text.substr(0, k - 1);
     if (static_cast<int>(out.data.size()) > kSectionColumn) out.data.resize(kSectionColumn);
     return out;
+}
+
+// The records of one physical line: the line itself, or, when it runs 80-column
+// records together without line terminators (HP ME's IGES translator; OCCT reads
+// such files), each record: the line is a whole number (> 1) of 80-column records,
+// each with a section letter in column 73.
+std::vector<std::string> line_records(const std::string& line) {
+    const std::size_t n = line.size();
+    if (n < 2 * kRecordWidth || n % kRecordWidth != 0) return {line};
+    for (std::size_t at = 0; at < n; at += kRecordWidth)
+        if (!is_section_letter(line[at + kSectionColumn])) return {line};
+    std::vector<std::string> records;
+    for (std::size_t at = 0; at < n; at += kRecordWidth) records.push_back(line.substr(at, kRecordWidth));
+    return records;
 }
 
 std::string pad(std::string s, std::size_t width) {
@@ -200,13 +216,20 @@ IgesFile IgesFile::parse(const std::string& text, const std::string& name) {
     int current = -1;
     bool any = false;
     std::size_t pos = 0;
-    while (pos < text.size()) {
-        std::size_t e = text.find('\n', pos);
-        if (e == std::string::npos) e = text.size();
-        std::string raw = text.substr(pos, e - pos);
-        pos = e + 1;
+    std::vector<std::string> pending;  // records of the current physical line not yet taken
+    while (pos < text.size() || !pending.empty()) {
+        if (pending.empty()) {
+            std::size_t e = text.find('\n', pos);
+            if (e == std::string::npos) e = text.size();
+            std::string physical = text.substr(pos, e - pos);
+            pos = e + 1;
+            if (!physical.empty() && physical.back() == '\r') physical.pop_back();
+            pending = line_records(physical);
+            std::reverse(pending.begin(), pending.end());
+        }
+        const std::string raw = std::move(pending.back());
+        pending.pop_back();
         ++line_number;
-        if (!raw.empty() && raw.back() == '\r') raw.pop_back();
         RawLine l = classify_line(raw, line_number);
         if (l.section == 0) {
             if (raw.find_first_not_of(" \t\r\f\x1a") == std::string::npos) continue;  // blank

@@ -127,6 +127,34 @@ TEST(IgesFile, DefaultDelimitersWhenLeftEmpty) {
     EXPECT_EQ(f.global().units_flag, 6);
 }
 
+// Records run together without line terminators (HP ME's IGES translator, which
+// OCCT reads): the same entities and parameters as the file with its line breaks,
+// and errors still name the record as the line.
+TEST(IgesFile, RecordsWithoutLineBreaksAreSplitAt80Columns) {
+    IgesTextBuilder b;
+    b.add({110, "0.,0.,0.,1.,1.,1.;"});
+    b.add({110, "1.,2.,3.,4.,5.,6.;"});
+    const std::string text = b.text();
+    std::string joined;
+    for (char c : text)
+        if (c != '\n') joined += c;
+    joined += '\n';
+    const IgesFile lines = IgesFile::parse(text, "lines.igs"), run = IgesFile::parse(joined, "run.igs");
+    ASSERT_EQ(run.entries().size(), lines.entries().size());
+    ASSERT_EQ(run.entries().size(), 2u);
+    for (int k = 0; k < 2; ++k) {
+        ASSERT_EQ(run.parameters(k).size(), lines.parameters(k).size());
+        for (std::size_t i = 0; i < run.parameters(k).size(); ++i)
+            EXPECT_EQ(run.parameters(k)[i].number, lines.parameters(k)[i].number);
+    }
+    EXPECT_TRUE(run.warnings().empty());
+    // A run whose 4th record has no section letter is not split: a read error (the
+    // directory is not found), not a crash or a partial file.
+    std::string damaged = joined;
+    damaged[3 * 80 + 72] = 'X';
+    EXPECT_THROW(IgesFile::parse(damaged, "damaged.igs"), geom::ReadError);
+}
+
 TEST(IgesFile, ToleratesCrlfShortLinesAndMissingTerminate) {
     IgesTextBuilder b;
     b.add({110, "0.,0.,0.,1.,1.,1.;"});
