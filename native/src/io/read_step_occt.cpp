@@ -209,14 +209,23 @@ std::string read_failures(STEPCAFControl_Reader& reader) {
     return text;
 }
 
+// Bytes of the file's head searched for its first token.
+constexpr size_t kHeaderProbeBytes = 4096;
+
 // Throws a ReadError unless the file opens and starts with the ISO 10303-21 header.
 void check_step_header(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw geom::ReadError(path, 0, "cannot open the file");
-    std::string head(256, '\0');
+    std::string head(kHeaderProbeBytes, '\0');
     in.read(head.data(), static_cast<std::streamsize>(head.size()));
     head.resize(static_cast<size_t>(in.gcount()));
-    const size_t start = head.find_first_not_of(" \t\r\n");
+    // Blanks and comments may come first (Part 21 allows a comment wherever blanks
+    // are; OCCT's parser skips them).
+    size_t start = head.find_first_not_of(" \t\r\n");
+    while (start != std::string::npos && head.compare(start, 2, "/*") == 0) {
+        const size_t end = head.find("*/", start + 2);
+        start = end == std::string::npos ? end : head.find_first_not_of(" \t\r\n", end + 2);
+    }
     if (start == std::string::npos || head.compare(start, 12, "ISO-10303-21") != 0)
         throw geom::ReadError(path, 1, "not a STEP file (it does not start with 'ISO-10303-21;')");
 }

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <string>
 
 #include "geom/error.h"
@@ -112,6 +113,25 @@ double loop_signed_area(const geom::Loop& loop) {
 // reversed and clockwise when it is, holes the other way; the STEP reader mirrors
 // the loops of OCCT's reversed faces (a closed solid has both kinds), so meshing
 // reorients none (it warned on every reversed face of bm2_ec_exhaust-A and bottle).
+// Part 21 allows comments wherever blanks are, before the first token too; OCCT's
+// parser skips them. The header check did not: "not a STEP file".
+TEST(OcctModels, StepCommentBeforeTheIsoLineIsSkipped) {
+    REQUIRE_OCCT();
+    const std::string plain = temp_path("plain.stp"), commented = temp_path("commented.stp");
+    test::write_plate_with_holes_step(plain, 10, 8, 2, {{5, 4}}, 1);
+    {
+        std::ifstream in(plain);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::ofstream out(commented);
+        out << "/* written by a tool that signs its files */\n\n" << text;
+    }
+    const geom::Model a = io::read_model(plain), b = io::read_model(commented);
+    EXPECT_EQ(a.faces.size(), 7u);  // the box's 6 sides and the hole's cylinder
+    EXPECT_EQ(b.faces.size(), a.faces.size());
+    std::filesystem::remove(plain);
+    std::filesystem::remove(commented);
+}
+
 TEST(OcctModels, ReversedFacesLoopsFollowTheConvention) {
     REQUIRE_OCCT();
     const std::string path = temp_path("plate3_orient.step");
