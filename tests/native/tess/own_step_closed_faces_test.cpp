@@ -6,6 +6,7 @@
 // and normals are derived here from the shapes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -34,8 +35,13 @@ using test::cylinder_entities;
 using test::step_file;
 using test::step_real;
 
+// `text` written to a file of this test's own (ctest runs the cases of one suite in
+// parallel processes: a shared name raced) and read with `reader`.
 geom::Model read_with(io::StepReader reader, const std::string& name, const std::string& text) {
-    const std::string path = (std::filesystem::temp_directory_path() / ("trimkit_" + name)).string();
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string unique = std::string(test->test_suite_name()) + "_" + test->name() + "_" + name;
+    std::replace(unique.begin(), unique.end(), '/', '_');
+    const std::string path = (std::filesystem::temp_directory_path() / ("trimkit_" + unique)).string();
     {
         std::ofstream out(path);
         out << text;
