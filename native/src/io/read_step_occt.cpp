@@ -209,6 +209,13 @@ std::string read_failures(STEPCAFControl_Reader& reader) {
     return text;
 }
 
+// OCCT gives no face of the file: trimkit's own reader may still take it. OCCT parsed
+// the file but transferred no face (ADVANCED_BREP_REPRESENTATION without product
+// structure: NIST's switcharm.step), or cannot parse it at all (a UTF-8 byte order mark).
+struct OcctLeavesFile : geom::ReadError {
+    using geom::ReadError::ReadError;
+};
+
 // Bytes of the file's head searched for its first token.
 constexpr size_t kHeaderProbeBytes = 4096;
 
@@ -220,14 +227,18 @@ void check_step_header(const std::string& path) {
     in.read(head.data(), static_cast<std::streamsize>(head.size()));
     head.resize(static_cast<size_t>(in.gcount()));
     // Blanks and comments may come first (Part 21 allows a comment wherever blanks
-    // are; OCCT's parser skips them).
-    size_t start = head.find_first_not_of(" \t\r\n");
+    // are; OCCT's parser skips them). A UTF-8 byte order mark (a file saved by a text
+    // editor) stops OCCT's parser but not the own reader.
+    const bool bom = head.compare(0, 3, "\xEF\xBB\xBF") == 0;
+    size_t start = head.find_first_not_of(" \t\r\n", bom ? 3 : 0);
     while (start != std::string::npos && head.compare(start, 2, "/*") == 0) {
         const size_t end = head.find("*/", start + 2);
         start = end == std::string::npos ? end : head.find_first_not_of(" \t\r\n", end + 2);
     }
     if (start == std::string::npos || head.compare(start, 12, "ISO-10303-21") != 0)
         throw geom::ReadError(path, 1, "not a STEP file (it does not start with 'ISO-10303-21;')");
+    if (bom)
+        throw OcctLeavesFile(path, 1, "Open CASCADE does not read a STEP file that starts with a byte order mark");
 }
 
 // Throws a ReadError if the file's assembly structure (NEXT_ASSEMBLY_USAGE_OCCURRENCE:
@@ -307,12 +318,6 @@ private:
     Handle(TDocStd_Document) doc_;
 };
 
-// OCCT read the file but transferred no face: trimkit's own reader may still take it
-// (ADVANCED_BREP_REPRESENTATION without product structure: NIST's switcharm.step).
-struct OcctTransfersNoFaces : geom::ReadError {
-    using geom::ReadError::ReadError;
-};
-
 // Progress: parsing (ReadFile reports nothing) up to kParseShare, the transfer (with
 // OCCT's healing) up to kTransferShare, the translation after it.
 constexpr double kParseShare = 0.3;
@@ -355,7 +360,7 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     monitor.check();  // a user break ends the transfer early, with or without shapes
     if (!transferred) {
         const std::string why = occt_guarded([&] { return read_failures(reader); });
-        throw OcctTransfersNoFaces(path, 0, "Open CASCADE transfers no shape from the STEP file" +
+        throw OcctLeavesFile(path, 0, "Open CASCADE transfers no shape from the STEP file" +
                                            (why.empty() ? std::string() : ": " + why));
     }
     StepStyles styles(doc);
@@ -379,7 +384,7 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     if (model.faces.empty()) {
         for (const std::string& w : model.warnings)
             if (w.rfind("face ", 0) == 0) throw geom::ReadError(path, 0, "no face of the STEP file converts (" + w + ")");
-        throw OcctTransfersNoFaces(path, 0, "the STEP file has no exact faces (B-rep surfaces); tessellated-only or "
+        throw OcctLeavesFile(path, 0, "the STEP file has no exact faces (B-rep surfaces); tessellated-only or "
                                        "wireframe STEP is not supported");
     }
     return model;
@@ -404,7 +409,7 @@ geom::Model read_step(const std::string& path, const ReadOptions& options) {
         geom::Model model = read_step_occt(path, options);
         if (!not_own.empty()) model.warnings.push_back("read through Open CASCADE: " + not_own);
         return model;
-    } catch (const OcctTransfersNoFaces& occt) {
+    } catch (const OcctLeavesFile& occt) {
         if (options.step_reader != StepReader::kOcct) throw;
         try {
             geom::Model model = read_step_own(path, options);

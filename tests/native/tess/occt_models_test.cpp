@@ -114,8 +114,8 @@ double loop_signed_area(const geom::Loop& loop) {
 // the loops of OCCT's reversed faces (a closed solid has both kinds), so meshing
 // reorients none (it warned on every reversed face of bm2_ec_exhaust-A and bottle).
 // Part 21 allows comments wherever blanks are, before the first token too; OCCT's
-// parser skips them. The header check did not: "not a STEP file".
-TEST(OcctModels, StepCommentBeforeTheIsoLineIsSkipped) {
+// parser skips them. The header check did not: "not a STEP file", as for a byte order mark.
+TEST(OcctModels, StepCommentOrByteOrderMarkBeforeTheIsoLineIsRead) {
     REQUIRE_OCCT();
     const std::string plain = temp_path("plain.stp"), commented = temp_path("commented.stp");
     test::write_plate_with_holes_step(plain, 10, 8, 2, {{5, 4}}, 1);
@@ -128,6 +128,18 @@ TEST(OcctModels, StepCommentBeforeTheIsoLineIsSkipped) {
     const geom::Model a = io::read_model(plain), b = io::read_model(commented);
     EXPECT_EQ(a.faces.size(), 7u);  // the box's 6 sides and the hole's cylinder
     EXPECT_EQ(b.faces.size(), a.faces.size());
+    // A UTF-8 byte order mark (a text editor's save) stops OCCT's parser: the own
+    // reader takes the file, with a warning.
+    {
+        std::ifstream in(plain);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::ofstream out(commented);
+        out << "\xEF\xBB\xBF" << text;
+    }
+    const geom::Model c = io::read_model(commented);
+    EXPECT_EQ(c.faces.size(), a.faces.size());
+    ASSERT_FALSE(c.warnings.empty());
+    EXPECT_NE(c.warnings[0].find("byte order mark"), std::string::npos) << c.warnings[0];
     std::filesystem::remove(plain);
     std::filesystem::remove(commented);
 }
