@@ -26,13 +26,21 @@ void casteljau_split(const Eigen::Vector4d* row, int n, int stride, double s,
 
 Eigen::Vector3d BezierPatch::evaluate(double s, double t) const {
     Eigen::Vector4d column[geom::kMaxDegree + 1];
+    for (int i = 0; i <= p; ++i) column[i] = column_at(i, t);
+    return along_s(column, s);
+}
+
+Eigen::Vector4d BezierPatch::column_at(int i, double t) const {
     Eigen::Vector4d work[geom::kMaxDegree + 1];
-    for (int i = 0; i <= p; ++i) {
-        for (int j = 0; j <= q; ++j) work[j] = point(i, j);
-        for (int r = 1; r <= q; ++r)
-            for (int j = 0; j <= q - r; ++j) work[j] = (1.0 - t) * work[j] + t * work[j + 1];
-        column[i] = work[0];
-    }
+    for (int j = 0; j <= q; ++j) work[j] = point(i, j);
+    for (int r = 1; r <= q; ++r)
+        for (int j = 0; j <= q - r; ++j) work[j] = (1.0 - t) * work[j] + t * work[j + 1];
+    return work[0];
+}
+
+Eigen::Vector3d BezierPatch::along_s(const Eigen::Vector4d* columns, double s) const {
+    Eigen::Vector4d column[geom::kMaxDegree + 1];
+    for (int i = 0; i <= p; ++i) column[i] = columns[i];
     for (int r = 1; r <= p; ++r)
         for (int i = 0; i <= p - r; ++i) column[i] = (1.0 - s) * column[i] + s * column[i + 1];
     return column[0].head<3>() / column[0][3];

@@ -26,8 +26,15 @@ struct BezierPatch {
         const Eigen::Vector4d& h = point(i, j);
         return h.head<3>() / h[3];
     }
-    // S at local parameters (s, t) by de Casteljau on the homogeneous points.
+    // S at local parameters (s, t) by de Casteljau on the homogeneous points: each
+    // row i along t (column_at), then the rows' points along s (along_s).
     Eigen::Vector3d evaluate(double s, double t) const;
+    // Row i's homogeneous point at t (de Casteljau over j).
+    Eigen::Vector4d column_at(int i, double t) const;
+    // The homogeneous points columns[0..p] combined at s and projected: with
+    // columns[i] = column_at(i, t), exactly evaluate(s, t). For a curve of S at a
+    // fixed t, the columns are computed once.
+    Eigen::Vector3d along_s(const Eigen::Vector4d* columns, double s) const;
 };
 
 // A patch of `surface`'s bezier_patches() (Bezier knot vectors) in homogeneous form.

@@ -151,6 +151,12 @@ double angle_between(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
 }
 
+// Horizontal vector from the axis to P.
+Eigen::Vector3d radial_of(const RevolutionShape& shape, const Eigen::Vector3d& P) {
+    const Eigen::Vector3d d = P - shape.origin;
+    return d - d.dot(shape.axis) * shape.axis;
+}
+
 // The cell's points in its own terms: x along the angle direction, y along the meridian.
 struct CellView {
     const RevolutionShape& shape;
@@ -158,28 +164,58 @@ struct CellView {
     Eigen::Vector3d at(double x, double y) const {
         return shape.angle_dir == 0 ? patch.evaluate(x, y) : patch.evaluate(y, x);
     }
-    // Horizontal vector from the axis to the point (x, y).
-    Eigen::Vector3d radial(double x, double y) const {
-        const Eigen::Vector3d d = at(x, y) - shape.origin;
-        return d - d.dot(shape.axis) * shape.axis;
-    }
-    Eigen::Vector2d from_centre(double y) const { return shape.meridian(at(0.0, y)) - shape.centre; }
 };
 
-// Angle of the cell from x = 0 to x along row y (about the axis), or along the
-// meridian from y = 0 to y (about the meridian circle's centre).
-double row_angle(const CellView& cell, double y, double x) {
-    return angle_between(cell.radial(0.0, y), cell.radial(x, y));
-}
-double meridian_angle(const CellView& cell, double y) {
-    return angle_between(cell.from_centre(0.0), cell.from_centre(y));
-}
+// Points of one line of the cell, bit for bit as CellView::at gives them, with what
+// does not change along the line computed once (the bisections of parameter_of_angle
+// evaluate a line some 30 times): the row at y = `fixed` (x runs) or the meridian at
+// x = 0 (y runs). BezierPatch::evaluate combines rows along t first, then along s; a
+// line at fixed t keeps its rows' points, and at s = 0 or 1 the combination along s is
+// the first or last row's point exactly.
+class CellLine {
+public:
+    CellLine(const CellView& cell, bool row, double fixed) : cell_(cell) {
+        const BezierPatch& patch = cell.patch;
+        const bool t_fixed = row == (cell.shape.angle_dir == 0);  // else s is fixed
+        const double t = row ? fixed : 0.0, s = row ? fixed : 0.0;
+        if (t_fixed) {
+            mode_ = Mode::kRows;
+            for (int i = 0; i <= patch.p; ++i) rows_[i] = patch.column_at(i, t);
+        } else if (s == 0.0 || s == 1.0) {
+            mode_ = Mode::kOneRow;
+            row_ = s == 0.0 ? 0 : patch.p;
+        } else {
+            mode_ = Mode::kWhole;
+            fixed_ = s;
+        }
+    }
+    Eigen::Vector3d at(double r) const {
+        const BezierPatch& patch = cell_.patch;
+        switch (mode_) {
+        case Mode::kRows: return patch.along_s(rows_, r);
+        case Mode::kOneRow: {
+            const Eigen::Vector4d h = patch.column_at(row_, r);
+            return h.head<3>() / h[3];
+        }
+        default: return patch.evaluate(fixed_, r);
+        }
+    }
 
-// Angle over [0, 1] of a monotone arc, or infinity when its halves do not add up
-// (not monotone, or beyond pi).
-template <class Angle>
-double monotone_angle(const Angle& angle_to) {
-    const double whole = angle_to(0.0, 1.0), first = angle_to(0.0, 0.5), second = angle_to(0.5, 1.0);
+private:
+    enum class Mode { kRows, kOneRow, kWhole };
+    const CellView& cell_;
+    Mode mode_ = Mode::kWhole;
+    Eigen::Vector4d rows_[geom::kMaxDegree + 1];
+    int row_ = 0;
+    double fixed_ = 0.0;
+};
+
+// Angle of a monotone arc whose directions (from the centre) at its start, middle and
+// end are given, or infinity when its halves do not add up (not monotone, or beyond pi).
+template <class V>
+double monotone_angle(const V& start, const V& middle, const V& end) {
+    const double whole = angle_between(start, end), first = angle_between(start, middle),
+                 second = angle_between(middle, end);
     if (std::abs(first + second - whole) > kAngleSumSlack * std::max(1.0, whole) || !(whole < kMaxCellAngle))
         return kInfinity;
     return whole;
@@ -397,10 +433,9 @@ BilinearError revolution_error(const RevolutionShape& shape, const BezierPatch& 
 
     // Meridian term (0 on a straight meridian) and the largest distance from the axis.
     double psi = 0.0, e_b = 0.0;
+    const Eigen::Vector2d from_centre[3] = {m0 - shape.centre, mid - shape.centre, m1 - shape.centre};
     if (shape.circle_meridian) {
-        psi = monotone_angle([&](double a, double b) {
-            return angle_between(cell.from_centre(a), cell.from_centre(b));
-        });
+        psi = monotone_angle(from_centre[0], from_centre[1], from_centre[2]);
         if (!std::isfinite(psi)) return result;
         e_b = sagitta(shape.radius, psi);
     } else if (std::min(m0.x(), m1.x()) > shape.slack) {
@@ -415,10 +450,10 @@ BilinearError revolution_error(const RevolutionShape& shape, const BezierPatch& 
     // Angle term, measured on the row farthest from the axis.
     const double y_ref = m1.x() > m0.x() ? (mid.x() > m1.x() ? 0.5 : 1.0) : (mid.x() > m0.x() ? 0.5 : 0.0);
     double theta = 0.0;
-    if (cell.radial(0.0, y_ref).norm() > shape.slack) {
-        theta = monotone_angle([&](double a, double b) {
-            return angle_between(cell.radial(a, y_ref), cell.radial(b, y_ref));
-        });
+    const CellLine row(cell, true, y_ref);
+    const Eigen::Vector3d row_start = radial_of(shape, row.at(0.0));
+    if (row_start.norm() > shape.slack) {
+        theta = monotone_angle(row_start, radial_of(shape, row.at(0.5)), radial_of(shape, row.at(1.0)));
         if (!std::isfinite(theta)) return result;
     }
     const double e_a = sagitta(rho_max, theta);
@@ -430,10 +465,17 @@ BilinearError revolution_error(const RevolutionShape& shape, const BezierPatch& 
                                  : pieces(psi, shape.radius, tolerance - e_a - shape.slack);
     const double fraction = k >= 2.0 ? std::floor(k / 2.0) / k : 0.5;
     double split = 0.5;
-    if (along_angle && theta > 0.0)
-        split = parameter_of_angle([&](double x) { return row_angle(cell, y_ref, x); }, fraction * theta);
-    else if (!along_angle && psi > 0.0)
-        split = parameter_of_angle([&](double y) { return meridian_angle(cell, y); }, fraction * psi);
+    if (along_angle && theta > 0.0) {
+        split = parameter_of_angle([&](double x) { return angle_between(row_start, radial_of(shape, row.at(x))); },
+                                   fraction * theta);
+    } else if (!along_angle && psi > 0.0) {
+        const CellLine meridian(cell, false, 0.0);
+        split = parameter_of_angle(
+            [&](double y) {
+                return angle_between(from_centre[0], Eigen::Vector2d(shape.meridian(meridian.at(y)) - shape.centre));
+            },
+            fraction * psi);
+    }
     result.split_in_u = along_angle == (shape.angle_dir == 0);
     result.split = split;
     return result;
