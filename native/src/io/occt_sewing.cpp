@@ -12,7 +12,10 @@
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
+#include <Standard_Failure.hxx>
 #include <TopoDS.hxx>
+
+#include "io/occt_support.h"
 
 namespace trimkit::io {
 namespace {
@@ -62,9 +65,16 @@ SewnShape sew_loose_faces(const TopoDS_Shape& part) {
     out.free_edges_before = out.free_edges_after = count_free_edges(part);
     if (out.free_edges_before == 0) return out;
     BRepBuilderAPI_Sewing sewing(sewing_tolerance(part));
-    sewing.Add(part);
-    sewing.Perform();
-    const TopoDS_Shape sewn = sewing.SewedShape();
+    TopoDS_Shape sewn;
+    try {
+        sewn = occt_guarded([&] {
+            sewing.Add(part);
+            sewing.Perform();
+            return sewing.SewedShape();
+        });
+    } catch (const Standard_Failure&) {
+        return out;  // the part as it was: its faces meet by position only
+    }
     if (sewn.IsNull()) return out;
     const int after = count_free_edges(sewn);
     if (after >= out.free_edges_before) return out;

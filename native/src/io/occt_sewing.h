@@ -25,7 +25,8 @@ int count_free_edges(const TopoDS_Shape& shape);
 
 // `part` sewn when it has no solid, at least two faces and free edges; the sewing
 // tolerance is twice the part's largest vertex tolerance (the writer's own precision),
-// at least 1e-7 and at most 1e-4 of the part's size. Otherwise `part` itself.
+// at least 1e-7 and at most 1e-4 of the part's size. Otherwise, or when OCCT fails
+// while sewing, `part` itself.
 SewnShape sew_loose_faces(const TopoDS_Shape& part);
 
 // The part's face that `face` (a face of SewnShape::shape) stands for.
