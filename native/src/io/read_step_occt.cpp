@@ -361,7 +361,7 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
     if (!transferred) {
         const std::string why = occt_guarded([&] { return read_failures(reader); });
         throw OcctLeavesFile(path, 0, "Open CASCADE transfers no shape from the STEP file" +
-                                           (why.empty() ? std::string() : ": " + why));
+                                          (why.empty() ? std::string() : ": " + why));
     }
     StepStyles styles(doc);
 
@@ -385,7 +385,7 @@ geom::Model read_step_unguarded(const std::string& path, const ReadOptions& opti
         for (const std::string& w : model.warnings)
             if (w.rfind("face ", 0) == 0) throw geom::ReadError(path, 0, "no face of the STEP file converts (" + w + ")");
         throw OcctLeavesFile(path, 0, "the STEP file has no exact faces (B-rep surfaces); tessellated-only or "
-                                       "wireframe STEP is not supported");
+                                      "wireframe STEP is not supported");
     }
     return model;
 }
