@@ -8,7 +8,7 @@
 #include "geom/error.h"
 #include "geom/project_curve_adaptive.h"
 #include "geom/surface_projector.h"
-#include "io/iges_closed_surfaces.h"
+#include "io/closed_surface_loops.h"
 #include "io/trim_loop_repair.h"
 
 namespace trimkit::io {
@@ -96,7 +96,7 @@ struct LoopBuilder {
     geom::Face& face;
     int loop_number;
     double projection_tolerance;  // <= 0: project_curve's samples as they are (near_pole_fallback)
-    SurfacePeriods periods;       // closed directions of S (iges_closed_surfaces.h)
+    SurfacePeriods periods;       // closed directions of S (closed_surface_loops.h)
     bool projected_reported = false;
 
     // Indices into the loop's coedges of projected curves lying along a seam.

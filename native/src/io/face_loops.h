@@ -6,7 +6,7 @@
 // projected onto the surface (refined until the surface along it follows the curve,
 // geom/project_curve_adaptive.h). Projected curves along a seam are put on the side
 // the loop needs; on surfaces closed in u or v the loops are unwrapped and the surface
-// extended over them (io/iges_closed_surfaces.h).
+// extended over them (io/closed_surface_loops.h).
 #pragma once
 
 #include <functional>

@@ -54,7 +54,7 @@ struct IgesSurface {
     std::optional<geom::ArcParameterMap> angle;
     // kAngleV on a closed sweep (the NURBS closed in v): angles outside the
     // sweep map periodically (θ ± 2π k onto v ± period k), so a trim curve across
-    // the seam keeps its shape past the domain (io/iges_closed_surfaces.h).
+    // the seam keeps its shape past the domain (io/closed_surface_loops.h).
     bool periodic_angle = false;
     // u (after the affine map) is the angle of a circular-arc generatrix (120,
     // 140) or directrix (122): the NURBS parameter is angle_u->to_nurbs(θ), exact

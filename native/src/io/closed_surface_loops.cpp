@@ -1,4 +1,4 @@
-#include "io/iges_closed_surfaces.h"
+#include "io/closed_surface_loops.h"
 #include "io/trim_loop_repair.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Loops on closed surfaces (io/iges_closed_surfaces): each loop unwrapped from its
+// Loops on closed surfaces (io/closed_surface_loops): each loop unwrapped from its
 // own start may land whole periods away from the loop that encloses it.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "geom/analytic_curves.h"
 #include "geom/analytic_surfaces.h"
 #include "geom/face.h"
-#include "io/iges_closed_surfaces.h"
+#include "io/closed_surface_loops.h"
 
 namespace trimkit::io {
 namespace {

@@ -1,11 +1,11 @@
-// Trim loops on closed surfaces, for IgesReader's topology. A surface closed in
-// u or v (geom::is_closed_surface) is periodic there with the domain length as
-// period; files trim such surfaces with loops that run across the seam (a loop
-// on u in [-π/2, π/2] of a surface of revolution on [0, 2π]) or whose coedges
-// continue on the seam's other side. The loops are unwrapped (each coedge shifted
-// by whole periods to start where the previous one ends) and the surface is
-// extended over them (geom::extend_closed_surface, exact), so the face is the
-// region the file means instead of the part of it inside the domain.
+// Trim loops on closed surfaces, for the readers' face_loops (IGES and the own STEP
+// reader). A surface closed in u or v (geom::is_closed_surface) is periodic there
+// with the domain length as period; files trim such surfaces with loops that run
+// across the seam (a loop on u in [-π/2, π/2] of a surface of revolution on
+// [0, 2π]) or whose coedges continue on the seam's other side. The loops are
+// unwrapped (each coedge shifted by whole periods to start where the previous one
+// ends) and the surface is extended over them (geom::extend_closed_surface, exact),
+// so the face is the region the file means instead of the part of it inside the domain.
 #pragma once
 
 #include <vector>
