@@ -55,26 +55,36 @@ constexpr double kUvGapClosedIn3d = 1e-2;
 // trim_range's boxes are tight to this share of each curve's size.
 constexpr double kTrimRangeTolerance = 1e-10;
 
-// The (u, v) box of the face's p-curves in OCCT's parameters, tight: geom::curve_box
-// of the translated curves (OCCT's AddOptimal, a particle-swarm search per B-spline
-// curve, took 40 % of a .brep file's reading), AddOptimal for kinds without a translation.
-Eigen::AlignedBox2d trim_range(const TopoDS_Face& face) {
+// A coedge as OCCT gives it: its edge (oriented as the wire runs it) and its p-curve,
+// translated in OCCT's parameters.
+struct OcctCoedge {
+    TopoDS_Edge edge;
+    Handle(Geom2d_Curve) curve;
+    double first = 0.0, last = 0.0;
+    geom::NurbsCurve2d pcurve;
+};
+
+struct OcctWire {
+    bool outer = false;
+    std::vector<OcctCoedge> coedges;
+};
+
+// The (u, v) box of the p-curves in OCCT's parameters, tight: geom::curve_box of the
+// translated curves (OCCT's AddOptimal, a particle-swarm search per B-spline curve,
+// took 40 % of a .brep file's reading; AddOptimal is kept for a curve curve_box
+// refuses); the surface's bounds when there is none.
+Eigen::AlignedBox2d trim_range(const TopoDS_Face& face, const std::vector<OcctWire>& wires) {
     Bnd_Box2d box;
-    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
-        double first = 0, last = 0;
-        const Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(TopoDS::Edge(it.Current()), face, first, last);
-        if (c.IsNull()) continue;
-        try {
-            const geom::NurbsCurve2d curve = translate_curve(c, first, last);
-            const geom::NurbsCurve2d::Box hull = curve.control_box();
-            const Eigen::AlignedBox2d tight = geom::curve_box(curve, kTrimRangeTolerance * hull.diagonal().norm());
-            box.Update(tight.min().x(), tight.min().y(), tight.max().x(), tight.max().y());
-        } catch (const UntranslatedKind&) {
-            BndLib_Add2dCurve::AddOptimal(c, first, last, 0.0, box);
-        } catch (const geom::InvalidInput&) {
-            BndLib_Add2dCurve::AddOptimal(c, first, last, 0.0, box);
+    for (const OcctWire& wire : wires)
+        for (const OcctCoedge& c : wire.coedges) {
+            try {
+                const geom::NurbsCurve2d::Box hull = c.pcurve.control_box();
+                const Eigen::AlignedBox2d tight = geom::curve_box(c.pcurve, kTrimRangeTolerance * hull.diagonal().norm());
+                box.Update(tight.min().x(), tight.min().y(), tight.max().x(), tight.max().y());
+            } catch (const geom::InvalidInput&) {
+                BndLib_Add2dCurve::AddOptimal(c.curve, c.first, c.last, 0.0, box);
+            }
         }
-    }
     double u0 = 0, v0 = 0, u1 = 0, v1 = 0;
     if (box.IsVoid()) {
         BRep_Tool::Surface(face)->Bounds(u0, u1, v0, v1);
@@ -124,6 +134,28 @@ std::vector<TopoDS_Wire> ordered_wires(const TopoDS_Face& face) {
     return wires;
 }
 
+// The wires of the (forward) face, the outer one first, their p-curves translated.
+// Throws for an edge without a p-curve, UntranslatedKind for a curve kind without a
+// translation.
+std::vector<OcctWire> occt_wires(const TopoDS_Face& face) {
+    std::vector<OcctWire> wires;
+    const TopoDS_Wire outer = BRepTools::OuterWire(face);
+    for (const TopoDS_Wire& wire : ordered_wires(face)) {
+        OcctWire w;
+        w.outer = !outer.IsNull() && wire.IsSame(outer);
+        for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) {
+            OcctCoedge c;
+            c.edge = it.Current();
+            c.curve = BRep_Tool::CurveOnSurface(c.edge, face, c.first, c.last);
+            if (c.curve.IsNull()) throw std::runtime_error("an edge has no curve on the face");
+            c.pcurve = translate_curve(c.curve, c.first, c.last);
+            w.coedges.push_back(std::move(c));
+        }
+        wires.push_back(std::move(w));
+    }
+    return wires;
+}
+
 // One face occurrence to a geom::Face; coedges name their edges by `edges` (index
 // + offset into Model::edges; -1 for an edge not in the map). Throws on failure.
 geom::Face convert_face(const TopoDS_Face& located, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
@@ -135,7 +167,9 @@ geom::Face convert_face(const TopoDS_Face& located, const TopTools_IndexedMapOfS
     TopLoc_Location loc;
     const Handle(Geom_Surface) s = BRep_Tool::Surface(face, loc);
     if (s.IsNull()) throw std::runtime_error("the face has no surface");
-    TranslatedSurface translated = translate_surface(s, trim_range(face));
+    // The p-curves translated once: for the surface's range, then mapped into its (u,v).
+    const std::vector<OcctWire> wires = occt_wires(face);
+    TranslatedSurface translated = translate_surface(s, trim_range(face, wires));
     out.surface = loc.IsIdentity() ? std::move(translated.nurbs)
                                    : translated.nurbs.transformed(to_eigen(loc.Transformation()));
     out.surface_kind = translated.kind;
@@ -144,21 +178,16 @@ geom::Face convert_face(const TopoDS_Face& located, const TopTools_IndexedMapOfS
     const auto [v0, v1] = out.surface.domain_v();
     const double refit_tol = kPcurveRefitShare * std::max(u1 - u0, v1 - v0);
 
-    const TopoDS_Wire outer = BRepTools::OuterWire(face);
-    for (const TopoDS_Wire& wire : ordered_wires(face)) {
+    for (const OcctWire& wire : wires) {
         geom::Loop loop;
-        loop.outer = !outer.IsNull() && wire.IsSame(outer);
-        for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) {
-            const TopoDS_Edge& edge = it.Current();
-            double first = 0, last = 0;
-            const Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(edge, face, first, last);
-            if (c.IsNull()) throw std::runtime_error("an edge has no curve on the face");
-            geom::NurbsCurve2d pcurve = translated.map.map_curve(translate_curve(c, first, last), refit_tol);
+        loop.outer = wire.outer;
+        for (const OcctCoedge& c : wire.coedges) {
+            geom::NurbsCurve2d pcurve = translated.map.map_curve(c.pcurve, refit_tol);
             geom::Coedge coedge;
-            coedge.curve = edge.Orientation() == TopAbs_REVERSED ? pcurve.reversed() : std::move(pcurve);
-            const int index = edges.FindIndex(edge);
+            coedge.curve = c.edge.Orientation() == TopAbs_REVERSED ? pcurve.reversed() : std::move(pcurve);
+            const int index = edges.FindIndex(c.edge);
             coedge.edge = index > 0 ? index - 1 + edge_offset : -1;
-            coedge.edge_reversed = edge.Orientation() == TopAbs_REVERSED;
+            coedge.edge_reversed = c.edge.Orientation() == TopAbs_REVERSED;
             loop.coedges.push_back(std::move(coedge));
         }
         if (!loop.coedges.empty()) out.loops.push_back(std::move(loop));
