@@ -1,6 +1,5 @@
 #include "io/iges_file.h"
 
-#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -70,6 +69,22 @@ std::vector<std::string> line_records(const std::string& line) {
         if (!is_section_letter(line[at + kSectionColumn])) return {line};
     std::vector<std::string> records;
     for (std::size_t at = 0; at < n; at += kRecordWidth) records.push_back(line.substr(at, kRecordWidth));
+    return records;
+}
+
+// The file's records in order: its lines without their terminators, each as
+// line_records splits it.
+std::vector<std::string> file_records(const std::string& text) {
+    std::vector<std::string> records;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t e = text.find('\n', pos);
+        if (e == std::string::npos) e = text.size();
+        std::string line = text.substr(pos, e - pos);
+        pos = e + 1;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        for (std::string& record : line_records(line)) records.push_back(std::move(record));
+    }
     return records;
 }
 
@@ -215,20 +230,7 @@ IgesFile IgesFile::parse(const std::string& text, const std::string& name) {
     const std::string order = "SGDPT";
     int current = -1;
     bool any = false;
-    std::size_t pos = 0;
-    std::vector<std::string> pending;  // records of the current physical line not yet taken
-    while (pos < text.size() || !pending.empty()) {
-        if (pending.empty()) {
-            std::size_t e = text.find('\n', pos);
-            if (e == std::string::npos) e = text.size();
-            std::string physical = text.substr(pos, e - pos);
-            pos = e + 1;
-            if (!physical.empty() && physical.back() == '\r') physical.pop_back();
-            pending = line_records(physical);
-            std::reverse(pending.begin(), pending.end());
-        }
-        const std::string raw = std::move(pending.back());
-        pending.pop_back();
+    for (const std::string& raw : file_records(text)) {
         ++line_number;
         RawLine l = classify_line(raw, line_number);
         if (l.section == 0) {
