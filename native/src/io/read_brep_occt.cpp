@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -14,6 +15,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include "geom/error.h"
+#include "io/brep_input.h"
 #include "io/occt_progress.h"
 #include "io/occt_shape.h"
 #include "io/occt_support.h"
@@ -26,6 +28,32 @@ constexpr int kMaxLeadingBlankLines = 16;
 
 // Progress: BRepTools::Read up to this fraction, the translation after it.
 constexpr double kReadShare = 0.5;
+
+// BRepTools::Read on a BrepInput: a damaged file ends in a ReadError with its line,
+// not in OCCT's reader spinning at its end (brep_input.h).
+void read_shape(const std::string& path, TopoDS_Shape& shape, const BRep_Builder& builder,
+                const Message_ProgressRange& progress) {
+    std::optional<BrepInput> in;
+    try {
+        in.emplace(path);
+    } catch (const std::runtime_error& e) {
+        throw geom::ReadError(path, 0, e.what());
+    }
+    try {
+        occt_guarded([&] { BRepTools::Read(shape, *in, builder, progress); });
+    } catch (const BrepInputEnded& e) {
+        throw geom::ReadError(path, 0, e.what());
+    } catch (const Standard_Failure& e) {
+        if (!in->past_end()) throw;
+        throw geom::ReadError(path, 0, std::string(BrepInputEnded().what()) + ": " + failure_text(e));
+    } catch (const std::ios_base::failure&) {
+        throw geom::ReadError(path, in->line(),
+                              in->past_end() ? BrepInputEnded().what()
+                                             : "Open CASCADE's reader expects a number here (a damaged file?)");
+    }
+    // A shape read with values from past the end is not the file's.
+    if (in->past_end()) throw geom::ReadError(path, 0, BrepInputEnded().what());
+}
 
 geom::Model read_brep_unguarded(const std::string& path, const ReadOptions& options) {
     ReadMonitor monitor(path, options);
@@ -50,9 +78,9 @@ geom::Model read_brep_unguarded(const std::string& path, const ReadOptions& opti
     Handle(OcctProgress) progress = new OcctProgress(monitor);
     // Its own signal-catching scope (occt_guarded): after a fault, the shape, the
     // progress indicator and the monitor are destroyed as after any exception.
-    const bool read = occt_guarded([&] { return BRepTools::Read(shape, path.c_str(), builder, progress->Start()); });
+    read_shape(path, shape, builder, progress->Start());
     monitor.check();
-    if (!read || shape.IsNull())
+    if (shape.IsNull())
         throw geom::ReadError(path, 0, "Open CASCADE cannot read this .brep file (BRepTools::Read failed)");
     geom::Model model;
     model.units = "mm";

@@ -1,0 +1,114 @@
+// Damaged .brep files read by trimkit: Open CASCADE's BRepTools::Read loops over an
+// edge's representation records until it reads a 0 and never looks at its stream, so
+// a file cut inside those records, or with a word where a record has a number, made it
+// spin for ever (a CrankArm.brep cut at random). Through io/brep_input.h each is a
+// ReadError naming the damage; the whole file still reads. Models written here with
+// Open CASCADE (occt_models.h).
+#include <gtest/gtest.h>
+
+#if TRIMKIT_HAVE_OCCT_MODELS
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "geom/error.h"
+#include "io/occt_models.h"
+#include "io/read_model.h"
+
+namespace trimkit {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string temp_path(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("trimkit_damaged_" + name)).string();
+}
+
+std::string text_of(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+void write_text(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+// A half-cylinder face as .brep text, and where its first edge's first representation
+// record starts (the line after "Ed" and its flags line).
+struct BrepText {
+    std::string text;
+    std::size_t first_record = 0;
+};
+
+BrepText cylinder_face_text(const std::string& name) {
+    const std::string path = temp_path(name);
+    test::write_cylinder_face_brep(path, 10, 5, 0, kPi);
+    BrepText b{text_of(path)};
+    std::filesystem::remove(path);
+    const std::size_t ed = b.text.find("\nEd\n");
+    if (ed != std::string::npos) b.first_record = b.text.find('\n', ed + 4) + 1;
+    return b;
+}
+
+int line_at(const std::string& text, std::size_t offset) {
+    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + offset, '\n'));
+}
+
+TEST(OcctDamagedBrep, TheWholeFileReads) {
+    const BrepText b = cylinder_face_text("whole.brep");
+    ASSERT_GT(b.first_record, 0u);
+    const std::string path = temp_path("whole_copy.brep");
+    write_text(path, b.text);
+    EXPECT_EQ(io::read_model(path).faces.size(), 1u);
+    std::filesystem::remove(path);
+}
+
+TEST(OcctDamagedBrep, FileCutInsideAnEdgesRecordIsCutOff) {
+    const BrepText b = cylinder_face_text("cut_record.brep");
+    ASSERT_GT(b.first_record, 0u);
+    // "1  <curve> <location> <first> <last>": cut after the record's kind.
+    const std::string path = temp_path("cut_record_copy.brep");
+    write_text(path, b.text.substr(0, b.first_record + 3));
+    try {
+        io::read_model(path);
+        ADD_FAILURE() << "a cut-off file was read";
+    } catch (const geom::ReadError& e) {
+        EXPECT_NE(e.reason().find("cut off"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(path);
+}
+
+TEST(OcctDamagedBrep, WordInAnEdgesRecordIsAnErrorOnItsLine) {
+    const BrepText b = cylinder_face_text("word.brep");
+    ASSERT_GT(b.first_record, 0u);
+    std::string text = b.text;
+    const std::size_t index = text.find_first_not_of(' ', b.first_record + 1);  // the curve's index
+    ASSERT_NE(index, std::string::npos);
+    text[index] = 'x';
+    const std::string path = temp_path("word_copy.brep");
+    write_text(path, text);
+    try {
+        io::read_model(path);
+        ADD_FAILURE() << "a damaged file was read";
+    } catch (const geom::ReadError& e) {
+        EXPECT_EQ(e.line(), line_at(text, index)) << e.what();
+    }
+    std::filesystem::remove(path);
+}
+
+TEST(OcctDamagedBrep, EveryCutOfTheFileIsAReadError) {
+    const BrepText b = cylinder_face_text("cuts.brep");
+    const std::string path = temp_path("cuts_copy.brep");
+    for (int k = 1; k < 20; ++k) {
+        write_text(path, b.text.substr(0, b.text.size() * k / 20));
+        EXPECT_THROW(io::read_model(path), geom::ReadError) << "cut at " << k << "/20";
+    }
+    std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace trimkit
+#endif
