@@ -1,9 +1,7 @@
 #include "io/brep_input.h"
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
-#include <sstream>
+#include <utility>
 
 namespace trimkit::io {
 
@@ -11,14 +9,6 @@ namespace {
 
 // The "0" tokens served past the end, one block at a time.
 constexpr std::size_t kPaddingBlock = 4096;
-
-std::string file_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot open the file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 }  // namespace
 
@@ -48,7 +38,7 @@ BrepInputBuffer::int_type BrepInputBuffer::underflow() {
     return traits_type::to_int_type(*gptr());
 }
 
-BrepInput::BrepInput(const std::string& path) : std::istream(nullptr), buffer_(file_text(path)) {
+BrepInput::BrepInput(std::string text) : std::istream(nullptr), buffer_(std::move(text)) {
     rdbuf(&buffer_);
     exceptions(std::ios::failbit | std::ios::badbit);
 }

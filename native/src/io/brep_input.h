@@ -44,8 +44,8 @@ private:
 
 class BrepInput : public std::istream {
 public:
-    // Reads the whole file; throws std::runtime_error when it cannot be opened.
-    explicit BrepInput(const std::string& path);
+    // The stream over a file's text.
+    explicit BrepInput(std::string text);
     int line() const { return buffer_.line(); }
     bool past_end() const { return buffer_.past_end(); }
 

@@ -7,7 +7,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <optional>
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -15,6 +14,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include "geom/error.h"
+#include "io/brep_counts.h"
 #include "io/brep_input.h"
 #include "io/occt_progress.h"
 #include "io/occt_shape.h"
@@ -29,30 +29,33 @@ constexpr int kMaxLeadingBlankLines = 16;
 // Progress: BRepTools::Read up to this fraction, the translation after it.
 constexpr double kReadShare = 0.5;
 
-// BRepTools::Read on a BrepInput: a damaged file ends in a ReadError with its line,
-// not in OCCT's reader spinning at its end (brep_input.h).
+// BRepTools::Read on a BrepInput, after check_brep_counts: a damaged file ends in a
+// ReadError with its line, not in OCCT's reader spinning at its end (brep_input.h) or
+// allocating what a damaged count asks (brep_counts.h).
 void read_shape(const std::string& path, TopoDS_Shape& shape, const BRep_Builder& builder,
                 const Message_ProgressRange& progress) {
-    std::optional<BrepInput> in;
+    std::ifstream file(path, std::ios::binary | std::ios::ate);
+    if (!file) throw geom::ReadError(path, 0, "cannot open the file");
+    std::string content(static_cast<std::size_t>(file.tellg()), '\0');
+    file.seekg(0);
+    if (!file.read(content.data(), static_cast<std::streamsize>(content.size())))
+        throw geom::ReadError(path, 0, "cannot read the file");
+    check_brep_counts(content, path);
+    BrepInput in(std::move(content));
     try {
-        in.emplace(path);
-    } catch (const std::runtime_error& e) {
-        throw geom::ReadError(path, 0, e.what());
-    }
-    try {
-        occt_guarded([&] { BRepTools::Read(shape, *in, builder, progress); });
+        occt_guarded([&] { BRepTools::Read(shape, in, builder, progress); });
     } catch (const BrepInputEnded& e) {
         throw geom::ReadError(path, 0, e.what());
     } catch (const Standard_Failure& e) {
-        if (!in->past_end()) throw;
+        if (!in.past_end()) throw;
         throw geom::ReadError(path, 0, std::string(BrepInputEnded().what()) + ": " + failure_text(e));
     } catch (const std::ios_base::failure&) {
-        throw geom::ReadError(path, in->line(),
-                              in->past_end() ? BrepInputEnded().what()
+        throw geom::ReadError(path, in.line(),
+                              in.past_end() ? BrepInputEnded().what()
                                              : "Open CASCADE's reader expects a number here (a damaged file?)");
     }
     // A shape read with values from past the end is not the file's.
-    if (in->past_end()) throw geom::ReadError(path, 0, BrepInputEnded().what());
+    if (in.past_end()) throw geom::ReadError(path, 0, BrepInputEnded().what());
 }
 
 geom::Model read_brep_unguarded(const std::string& path, const ReadOptions& options) {

@@ -3,8 +3,6 @@
 // extraction throws; line() and past_end() say where reading stopped.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "io/brep_input.h"
@@ -12,15 +10,8 @@
 namespace trimkit::io {
 namespace {
 
-std::string write_temp(const std::string& name, const std::string& text) {
-    const std::string path = (std::filesystem::temp_directory_path() / ("trimkit_brep_input_" + name)).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
-
 TEST(BrepInput, ANumberAtTheVeryEndIsNotPastTheEnd) {
-    const std::string path = write_temp("end.txt", "Shapes 2\n+1 17");
-    BrepInput in(path);
+    BrepInput in("Shapes 2\n+1 17");
     std::string word;
     int count = 0, orientation = 0, index = 0;
     in >> word >> count >> orientation >> index;
@@ -30,12 +21,10 @@ TEST(BrepInput, ANumberAtTheVeryEndIsNotPastTheEnd) {
     EXPECT_EQ(index, 17);
     EXPECT_FALSE(in.past_end());
     EXPECT_EQ(in.line(), 2);
-    std::filesystem::remove(path);
 }
 
 TEST(BrepInput, ValuesPastTheEndAreZerosUntilThePaddingRunsOut) {
-    const std::string path = write_temp("padding.txt", "7");
-    BrepInput in(path);
+    BrepInput in("7");
     int value = -1;
     in >> value;
     EXPECT_EQ(value, 7);
@@ -48,23 +37,16 @@ TEST(BrepInput, ValuesPastTheEndAreZerosUntilThePaddingRunsOut) {
     EXPECT_THROW(
         for (; read <= kMaxPadding; ++read) in >> value, BrepInputEnded);
     EXPECT_LE(read, kMaxPadding / 2 + 1);
-    std::filesystem::remove(path);
 }
 
 TEST(BrepInput, AWordWhereANumberBelongsThrowsOnItsLine) {
-    const std::string path = write_temp("word.txt", "1 2\n3 x 4\n");
-    BrepInput in(path);
+    BrepInput in("1 2\n3 x 4\n");
     int a = 0, b = 0, c = 0, d = 0;
     in >> a >> b >> c;
     EXPECT_EQ(c, 3);
     EXPECT_THROW(in >> d, std::ios_base::failure);
     EXPECT_EQ(in.line(), 2);
     EXPECT_FALSE(in.past_end());
-    std::filesystem::remove(path);
-}
-
-TEST(BrepInput, AMissingFileThrows) {
-    EXPECT_THROW(BrepInput("/nonexistent/trimkit/none.brep"), std::runtime_error);
 }
 
 }  // namespace

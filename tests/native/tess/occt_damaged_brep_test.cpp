@@ -1,12 +1,14 @@
 // Damaged .brep files read by trimkit: Open CASCADE's BRepTools::Read loops over an
 // edge's representation records until it reads a 0 and never looks at its stream, so
 // a file cut inside those records, or with a word where a record has a number, made it
-// spin for ever (a CrankArm.brep cut at random). Through io/brep_input.h each is a
+// spin for ever (a CrankArm.brep cut at random), and it allocates what a count asks
+// before reading the items. Through io/brep_input.h and io/brep_counts.h each is a
 // ReadError naming the damage; the whole file still reads. Models written here with
-// Open CASCADE (occt_models.h).
+// Open CASCADE (occt_models.h), and CrankArm.brep from ../shared.
 #include <gtest/gtest.h>
 
 #if TRIMKIT_HAVE_OCCT_MODELS
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -95,6 +97,28 @@ TEST(OcctDamagedBrep, WordInAnEdgesRecordIsAnErrorOnItsLine) {
         ADD_FAILURE() << "a damaged file was read";
     } catch (const geom::ReadError& e) {
         EXPECT_EQ(e.line(), line_at(text, index)) << e.what();
+    }
+    std::filesystem::remove(path);
+}
+
+// A real file (CrankArm.brep) whose first triangulation claims 2e9 triangles: OCCT
+// allocated them (24 GB) before reading one; now the count is refused on its line.
+TEST(OcctDamagedBrep, TriangleCountBeyondTheFileIsRefusedOnItsLine) {
+    const std::string source = std::string(TRIMKIT_CAD_DIR) + "/brep/CrankArm.brep";
+    if (!std::filesystem::exists(source)) GTEST_SKIP() << source << " not found";
+    std::string text = text_of(source);
+    const std::size_t section = text.find("\nTriangulations ");
+    ASSERT_NE(section, std::string::npos);
+    const std::size_t header = text.find('\n', section + 1) + 1;   // "nodes triangles uv deflection"
+    const std::size_t triangles = text.find(' ', header) + 1;
+    text.replace(triangles, text.find(' ', triangles) - triangles, "2000000000");
+    const std::string path = temp_path("triangles.brep");
+    write_text(path, text);
+    try {
+        io::read_model(path);
+        ADD_FAILURE() << "the damaged count was read";
+    } catch (const geom::ReadError& e) {
+        EXPECT_EQ(e.line(), line_at(text, header)) << e.what();
     }
     std::filesystem::remove(path);
 }
