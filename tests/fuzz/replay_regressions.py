@@ -5,7 +5,7 @@
 
 REGRESSIONS_DIR/FORMAT/* are inputs that once crashed, hung or leaked in a reader.
 Each goes through the command that reads its format: `info` and a coarse `mesh`
-for IGES and STEP, `tbp mesh` for .tbp, `extend` for .tkz, `tbp from-mesh` for OBJ, PLY, STL and GLB.
+for IGES, STEP and .brep, `tbp mesh` for .tbp, `extend` for .tkz, `tbp from-mesh` for OBJ, PLY, STL and GLB.
 Every run must end within TIME_LIMIT seconds with exit status 0 or 2 (bad input),
 never a signal or an internal error (1); on 2, stderr must be one line
 `trimkit: FILE[:LINE]: reason` naming the input. Exits non-zero listing failures.
@@ -19,12 +19,12 @@ TIME_LIMIT = 20.0  # seconds per command; the readers take milliseconds on these
 
 # The input's extension as each reader wants it (the regression files keep
 # libFuzzer's names, crash-<sha1>, with the format's extension added).
-EXTENSIONS = {"iges": ".igs", "step": ".stp", "tbp": ".tbp", "obj": ".obj", "ply": ".ply",
+EXTENSIONS = {"iges": ".igs", "step": ".stp", "brep": ".brep", "tbp": ".tbp", "obj": ".obj", "ply": ".ply",
               "stl": ".stl", "glb": ".glb", "tkz": ".tkz"}
 
 
 def commands(trimkit, fmt, path, out_dir):
-    if fmt in ("iges", "step"):
+    if fmt in ("iges", "step", "brep"):
         return [[trimkit, "info", path],
                 [trimkit, "mesh", path, "-o", str(out_dir / "out.obj"), "--tolerance", "0.02",
                  "--relative", "--threads", "1"]]
