@@ -246,7 +246,7 @@ double vertex_reach(const TopoDS_Face& face) {
 // The face healed by ShapeFix_Face (wire order, connection, small edges, missing and
 // gapped p-curves, degenerated edges, wire orientation), and what it did.
 TopoDS_Face healed_face(const TopoDS_Face& face, std::string& done) {
-    Handle(ShapeFix_Face) fix = new ShapeFix_Face(face);
+    const Handle(ShapeFix_Face) fix = occt_guarded([&] { return Handle(ShapeFix_Face)(new ShapeFix_Face(face)); });
     // P-curves whose ends miss their vertices are dropped and projected again from
     // the 3D curves; the remaining gaps are closed in 2D and 3D.
     fix->FixWireTool()->FixRemovePCurveMode() = 1;
@@ -338,6 +338,10 @@ geom::Face translated_face(const TopoDS_Face& face, const TopTools_IndexedMapOfS
 // of their own (occt_guarded): after a memory fault in one of them, what this function
 // holds (the first translation, the failure text) is still here and destroyed normally.
 geom::Face checked_face(const TopoDS_Face& face, const TopTools_IndexedMapOfShape& edges, int edge_offset) {
+    // A damaged .brep can leave a face without its surface: nothing to translate or heal
+    // (ShapeFix_Face's constructor faults on it).
+    if (occt_guarded([&] { return BRep_Tool::Surface(face).IsNull(); }))
+        throw std::runtime_error("the face has no surface");
     std::string failure;
     std::optional<geom::Face> best;
     double gap = 0;

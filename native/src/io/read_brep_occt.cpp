@@ -7,6 +7,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <sstream>
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -29,11 +31,35 @@ constexpr int kMaxLeadingBlankLines = 16;
 // Progress: BRepTools::Read up to this fraction, the translation after it.
 constexpr double kReadShare = 0.5;
 
+// std::cout sent to `to` while it lives: OCCT's .brep reader reports damage there
+// ("Not a TShape table"), which would land in `trimkit ... --json` output.
+class CoutTo {
+public:
+    explicit CoutTo(std::ostream& to) : saved_(std::cout.rdbuf(to.rdbuf())) {}
+    ~CoutTo() { std::cout.rdbuf(saved_); }
+    CoutTo(const CoutTo&) = delete;
+    CoutTo& operator=(const CoutTo&) = delete;
+
+private:
+    std::streambuf* saved_;
+};
+
+// What OCCT printed, on one line.
+std::string one_line(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '\n' || c == '\r') c = ' ';
+        if (c != ' ' || (!out.empty() && out.back() != ' ')) out += c;
+    }
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    return out;
+}
+
 // BRepTools::Read on a BrepInput, after check_brep_counts: a damaged file ends in a
 // ReadError with its line, not in OCCT's reader spinning at its end (brep_input.h) or
-// allocating what a damaged count asks (brep_counts.h).
-void read_shape(const std::string& path, TopoDS_Shape& shape, const BRep_Builder& builder,
-                const Message_ProgressRange& progress) {
+// allocating what a damaged count asks (brep_counts.h). Returns what OCCT printed.
+std::string read_shape(const std::string& path, TopoDS_Shape& shape, const BRep_Builder& builder,
+                       const Message_ProgressRange& progress) {
     std::ifstream file(path, std::ios::binary | std::ios::ate);
     if (!file) throw geom::ReadError(path, 0, "cannot open the file");
     std::string content(static_cast<std::size_t>(file.tellg()), '\0');
@@ -42,6 +68,8 @@ void read_shape(const std::string& path, TopoDS_Shape& shape, const BRep_Builder
         throw geom::ReadError(path, 0, "cannot read the file");
     check_brep_counts(content, path);
     BrepInput in(std::move(content));
+    std::ostringstream printed;
+    const CoutTo redirect(printed);
     try {
         occt_guarded([&] { BRepTools::Read(shape, in, builder, progress); });
     } catch (const BrepInputEnded& e) {
@@ -56,6 +84,7 @@ void read_shape(const std::string& path, TopoDS_Shape& shape, const BRep_Builder
     }
     // A shape read with values from past the end is not the file's.
     if (in.past_end()) throw geom::ReadError(path, 0, BrepInputEnded().what());
+    return one_line(printed.str());
 }
 
 geom::Model read_brep_unguarded(const std::string& path, const ReadOptions& options) {
@@ -81,11 +110,13 @@ geom::Model read_brep_unguarded(const std::string& path, const ReadOptions& opti
     Handle(OcctProgress) progress = new OcctProgress(monitor);
     // Its own signal-catching scope (occt_guarded): after a fault, the shape, the
     // progress indicator and the monitor are destroyed as after any exception.
-    read_shape(path, shape, builder, progress->Start());
+    const std::string printed = read_shape(path, shape, builder, progress->Start());
     monitor.check();
     if (shape.IsNull())
-        throw geom::ReadError(path, 0, "Open CASCADE cannot read this .brep file (BRepTools::Read failed)");
+        throw geom::ReadError(path, 0, "Open CASCADE cannot read this .brep file (BRepTools::Read failed" +
+                                           (printed.empty() ? std::string() : ": " + printed) + ")");
     geom::Model model;
+    if (!printed.empty()) model.warnings.push_back("Open CASCADE's reader: " + printed);
     model.units = "mm";
     model.scale_to_metres = 1e-3;
     int face_number = 0;
