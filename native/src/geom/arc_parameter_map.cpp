@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "geom/error.h"
+#include "geom/clamped_int.h"
 
 namespace trimkit::geom {
 
@@ -46,8 +47,7 @@ ArcParameterMap::ArcParameterMap(double theta0, double theta1)
 
 int ArcParameterMap::segment_of(double lambda) const {
     const double step = 2 * std::abs(half_);
-    int i = static_cast<int>(std::floor((lambda - t_[0]) / step));
-    i = std::clamp(i, 0, k_ - 1);
+    int i = clamped_int(std::floor((lambda - t_[0]) / step), 0, k_ - 1);
     // Rounding in the division can land one segment off near a knot.
     if (i > 0 && lambda < t_[i]) --i;
     if (i < k_ - 1 && lambda >= t_[i + 1]) ++i;

@@ -6,6 +6,7 @@
 
 #include "geom/error.h"
 #include "geom/knot_vector.h"
+#include "geom/clamped_int.h"
 
 namespace trimkit::geom {
 namespace {
@@ -59,13 +60,16 @@ NurbsSurface extend_u(const NurbsSurface& input, double a, double b, double tole
                            " and " + format_value(u1) + " differ by more than " + format_value(tolerance) +
                            "; the surface is not closed in this direction");
     // Copies c = first .. last cover [u0 + first L, u0 + (last + 1) L] ⊇ [a, b].
-    const int first = static_cast<int>(std::floor((a - u0 + slack) / L));
-    const int last = static_cast<int>(std::ceil((b - u0 - slack) / L)) - 1;
-    const int copies = last - first + 1;
-    if (copies > kMaxPeriods)
+    const double first_copy = std::floor((a - u0 + slack) / L), last_copy = std::ceil((b - u0 - slack) / L) - 1;
+    if (!(last_copy - first_copy + 1 <= kMaxPeriods) || !(std::abs(first_copy) <= kMaxPeriodsAway))
         throw InvalidInput("extend_closed_surface: range [" + format_value(a) + ", " + format_value(b) +
-                           "] spans " + std::to_string(copies) + " periods of length " + format_value(L) +
-                           "; at most " + std::to_string(kMaxPeriods) + " are joined");
+                           "] spans " + format_value(last_copy - first_copy + 1) + " periods of length " +
+                           format_value(L) + " from " + format_value(first_copy) + " periods away; at most " +
+                           std::to_string(kMaxPeriods) + " are joined, within " +
+                           std::to_string(kMaxPeriodsAway) + " periods of the domain");
+    const int first = clamped_int(first_copy, -kMaxPeriodsAway, kMaxPeriodsAway);
+    const int last = first + clamped_int(last_copy - first_copy, 0, kMaxPeriods - 1);
+    const int copies = last - first + 1;
     const int p = s.degree_u(), nu = s.count_u(), nv = s.count_v();
     const std::vector<double>& U = s.knots_u();
     // Knots: p+1 at the start, each copy's inner knots, p at each seam, p+1 at the end.

@@ -22,12 +22,15 @@ bool is_closed_surface(const NurbsSurface& s, int direction, double tolerance);
 // there, the earlier copy's boundary row kept), then cut to [a, b] by knot
 // insertion (NurbsSurface::sub_surface). [a, b] inside the domain gives the
 // plain sub-surface. Throws InvalidInput if s is not closed within `tolerance`,
-// a >= b, or [a, b] needs more than kMaxPeriods copies.
+// a >= b, or [a, b] needs more than kMaxPeriods copies or starts more than
+// kMaxPeriodsAway periods from the domain.
 NurbsSurface extend_closed_surface(const NurbsSurface& s, int direction, double a, double b,
                                    double tolerance);
 
 // Copies joined at most: trim loops wind around a closed surface once, and
 // a range spanning a few periods is already a broken file.
 constexpr int kMaxPeriods = 4;
+// ... and the range starts within this many periods of the domain.
+constexpr int kMaxPeriodsAway = 64;
 
 }  // namespace trimkit::geom

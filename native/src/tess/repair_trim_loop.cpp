@@ -13,6 +13,7 @@
 
 #include "mesh/grid_cell.h"
 #include "mesh/triangulate_polygon.h"
+#include "geom/clamped_int.h"
 
 namespace trimkit::tess {
 
@@ -160,7 +161,7 @@ PieceExtent piece_extent(const std::vector<PolylinePoint>& P, const geom::NurbsS
         mesh::check_deadline_now(deadline, "trim loop repair");  // up to N^2 samples each
         const Eigen::Vector2d o = uv[t[0]];
         const double area3 = 0.5 * (X[t[1]] - X[t[0]]).cross(X[t[2]] - X[t[0]]).norm();
-        const int N = std::clamp(static_cast<int>(std::ceil(2.0 * std::sqrt(area3) / reach)), 1, kMaxSampleDivisions);
+        const int N = geom::clamped_int(std::ceil(2.0 * std::sqrt(area3) / reach), 1, kMaxSampleDivisions);
         const Eigen::Vector2d e1 = (uv[t[1]] - o) / N, e2 = (uv[t[2]] - o) / N;
         const double sub_area = 0.5 * std::abs(cross(e1, e2));
         for (int a = 0; a < N; ++a)

@@ -12,6 +12,7 @@
 #include "mesh/grid_cell.h"
 #include "mesh/parallel_for.h"
 #include "tess/share_edge_points.h"
+#include "geom/clamped_int.h"
 
 namespace trimkit::tess {
 
@@ -242,8 +243,7 @@ public:
             const Trace& trace = traces[i];
             const geom::Face& face = model.faces[trace.face];
             const geom::Coedge& coedge = face.loops[trace.loop].coedges[trace.coedge];
-            const int n = std::clamp(static_cast<int>(std::ceil(trace.length / spacing)), kTraceIntervals,
-                                     kMaxLookupSamples);
+            const int n = geom::clamped_int(std::ceil(trace.length / spacing), kTraceIntervals, kMaxLookupSamples);
             const auto [t0, t1] = coedge.curve.domain();
             const std::vector<Eigen::Vector3d> points = trace_points(face, coedge, n);
             for (int k = 0; k <= n; ++k) {

@@ -1,4 +1,5 @@
 #include "tess/trim_cells.h"
+#include "geom/clamped_int.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,7 +83,7 @@ public:
 private:
     int index(double x, double lo, double hi) const {
         const double f = (x - lo) / (hi - lo) * n_;
-        return std::clamp(static_cast<int>(std::floor(f)), 0, n_ - 1);
+        return geom::clamped_int(std::floor(f), 0, n_ - 1);
     }
     Eigen::AlignedBox2d box_;
     int n_ = 1;

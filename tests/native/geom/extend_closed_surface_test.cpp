@@ -99,5 +99,19 @@ TEST(ExtendClosedSurface, RejectsOpenSurfacesAndTooManyPeriods) {
     EXPECT_THROW(extend_closed_surface(full, 0, 1.0, 1.0, 1e-9), InvalidInput);
 }
 
+// Ranges whose period counts do not fit an int (a damaged .brep's p-curves, fuzz_brep):
+// refused before any conversion (UBSan flagged the old int cast), near and far alike.
+TEST(ExtendClosedSurface, RejectsRangesBeyondIntsAndFarFromTheDomain) {
+    const NurbsSurface full = cylinder_patch(kCenter, kAxis, kRef, 2.0, 0, 2 * kPi, 0, 1);
+    EXPECT_THROW(extend_closed_surface(full, 0, 0.0, 1.5e17, 1e-9), InvalidInput);
+    EXPECT_THROW(extend_closed_surface(full, 0, -1.5e17, 0.5, 1e-9), InvalidInput);
+    EXPECT_THROW(extend_closed_surface(full, 0, 1e17, 1e17 + 1.0, 1e-9), InvalidInput);
+    const double L = 2 * kPi, away = (kMaxPeriodsAway + 1) * L;
+    EXPECT_THROW(extend_closed_surface(full, 0, away + 0.5, away + 1.0, 1e-9), InvalidInput);
+    // Within the limits it still extends: a range two periods up.
+    const NurbsSurface up = extend_closed_surface(full, 0, 2 * L + 0.5, 2 * L + 1.0, 1e-9);
+    EXPECT_NEAR((up.evaluate(2 * L + 0.75, 0.5) - full.evaluate(0.75, 0.5)).norm(), 0.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace trimkit::geom
