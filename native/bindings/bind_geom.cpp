@@ -82,7 +82,9 @@ void bind_geom(py::module_& m) {
         .def_readonly("bodies", &geom::Model::bodies)
         .def_readonly("instances", &geom::Model::instances)
         .def_readonly("colors", &geom::Model::colors)
-        .def_readonly("warnings", &geom::Model::warnings);
+        .def_readonly("warnings", &geom::Model::warnings)
+        .def_readonly("unread_faces", &geom::Model::unread_faces,
+                      "why each face the reader left out was left out (each also in warnings)");
 
     m.def("flatten_instances", &geom::flatten_instances, py::arg("model"), py::call_guard<py::gil_scoped_release>(),
           "The model with every instance's body copied into place (what `trimkit mesh` meshes): faces in no "

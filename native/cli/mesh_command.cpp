@@ -4,8 +4,9 @@
 // Each face left out of the mesh (failed_faces) gets one stderr line,
 // "trimkit: MODEL: face N: reason"; the mesh of the other faces is still written.
 // The reader's own warnings (a face it could not translate: "face 32 skipped: ...")
-// get one stderr line each too, the first kListedWarnings of them.
-// --strict: exit status 3 when any face failed.
+// get one stderr line each too, the first kListedWarnings of them; --json lists the
+// faces the reader left out under "unread_faces".
+// --strict: exit status 3 when any face failed or was left out by the reader.
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -128,6 +129,9 @@ int run_mesh(const std::vector<std::string>& argv) {
         for (size_t k = 0; k < result.warnings.size(); ++k) json << (k ? ", " : "") << json_string(result.warnings[k]);
         json << "], \"read_warnings\": [";
         for (size_t k = 0; k < model.warnings.size(); ++k) json << (k ? ", " : "") << json_string(model.warnings[k]);
+        json << "], \"unread_faces\": [";
+        for (size_t k = 0; k < model.unread_faces.size(); ++k)
+            json << (k ? ", " : "") << json_string(model.unread_faces[k]);
         json << "]"
              << ", \"seconds\": {\"read\": " << json_number(read_seconds)
              << ", \"trim\": " << json_number(result.seconds.trim)
@@ -155,7 +159,8 @@ int run_mesh(const std::vector<std::string>& argv) {
         std::cerr << "trimkit: " << path << ": " << (failed.reason.rfind(prefix, 0) == 0 ? "" : prefix)
                   << failed.reason << "\n";
     }
-    return args.flag("--strict") && !result.failed_faces.empty() ? kFailedFacesStatus : 0;
+    const bool faces_missing = !result.failed_faces.empty() || !model.unread_faces.empty();
+    return args.flag("--strict") && faces_missing ? kFailedFacesStatus : 0;
 }
 
 }  // namespace trimkit::cli

@@ -132,3 +132,14 @@ def test_measure_one_face_part_within_tolerance_and_a_moved_vertex_beyond(bracke
     assert far.mesh_to_surface > 5.0 * result.tolerance
     with pytest.raises(ValueError, match="not among the faces measured"):
         io.measure(model, part.positions, part.triangles, part.face_ids, [0])
+
+
+def test_a_face_the_reader_left_out_is_listed_with_its_reason(tmp_path):
+    """Model.unread_faces: the faces missing from every mesh, also among the warnings the
+    importer reports."""
+    from iges_samples import write_skipped_face_file
+    path, bad = write_skipped_face_file(tmp_path / "skipped_face.igs")
+    model, _ = io.read_source(str(path))
+    [reason] = model.unread_faces
+    assert f"D{bad}" in reason and "skipped" in reason
+    assert reason in model.warnings

@@ -81,7 +81,18 @@ def test_face_the_reader_skips_is_reported_on_stderr(tmp_path):
     assert mesh["faces"] == 1 and mesh["faces_meshed"] == 1
     [warning] = [w for w in mesh["read_warnings"] if f"D{bad}" in w]
     assert "skipped" in warning
+    assert mesh["unread_faces"] == [warning]
     assert f"trimkit: {model}: warning: {warning}" in result.stderr.splitlines()
+
+
+def test_strict_exits_3_when_the_reader_left_a_face_out(tmp_path):
+    """The face the reader skipped is missing from the mesh: --strict fails the run as
+    it does for a face that failed its check."""
+    model, _ = write_skipped_face_file(tmp_path / "skipped_face.igs")
+    out = tmp_path / "out.ply"
+    result = run_mesh(model, "-o", str(out), "--tolerance", "0.05", "--strict")
+    assert result.returncode == 3, result.stderr
+    assert out.exists()  # the face that was read is still written
 
 
 def test_strict_exits_3_when_a_face_failed(tmp_path, bracket):

@@ -45,6 +45,7 @@ Model flatten_instances(Model model) {
     flat.scale_to_metres = model.scale_to_metres;
     flat.colors = model.colors;
     flat.warnings = model.warnings;
+    flat.unread_faces = model.unread_faces;
     // Faces in place, each edge kept once.
     std::map<int, int> kept_edges;
     std::vector<int> new_index(model.faces.size(), -1);

@@ -43,6 +43,17 @@ struct Model {
     std::vector<Instance> instances;  // placements of bodies; empty: each body once, untransformed
     std::vector<Color> colors;
     std::vector<std::string> warnings;  // file-level warnings ("entity 140 at D123 unsupported")
+    // Why each face of the file that the reader left out was left out (each also in
+    // `warnings`): such a face is missing from every mesh, and `trimkit mesh --strict`
+    // counts it as failed.
+    std::vector<std::string> unread_faces;
 };
+
+// Records a face of the file that the reader leaves out, and why (Model::unread_faces
+// and a warning).
+inline void skip_face(Model& model, const std::string& reason) {
+    model.warnings.push_back(reason);
+    model.unread_faces.push_back(reason);
+}
 
 }  // namespace trimkit::geom

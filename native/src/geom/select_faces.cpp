@@ -13,6 +13,7 @@ Model select_faces(const Model& model, const std::vector<int>& faces) {
     out.edges = model.edges;
     out.colors = model.colors;
     out.warnings = model.warnings;
+    out.unread_faces = model.unread_faces;
     std::vector<char> taken(model.faces.size(), 0);
     for (int f : faces) {
         if (f < 0 || f >= static_cast<int>(model.faces.size()))

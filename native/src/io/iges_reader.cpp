@@ -257,8 +257,12 @@ geom::Model IgesReader::read() {
         try {
             translate(e.sequence, Eigen::Affine3d::Identity(), 0);
         } catch (const geom::ReadError& err) {
-            warn("D" + std::to_string(e.sequence) + ": entity " + std::to_string(e.type) +
-                 " skipped: " + err.reason() + " (line " + std::to_string(err.line()) + ")");
+            const std::string why = "D" + std::to_string(e.sequence) + ": entity " + std::to_string(e.type) +
+                                    " skipped: " + err.reason() + " (line " + std::to_string(err.line()) + ")";
+            if (makes_faces(e.type))
+                geom::skip_face(model_, why);
+            else
+                warn(why);
             if (first_failure.empty() && makes_faces(e.type)) {
                 first_failure = err.reason();
                 first_failure_line = err.line();

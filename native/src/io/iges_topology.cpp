@@ -327,8 +327,8 @@ int IgesReader::read_body(int de, const Eigen::Affine3d& placement) {
                 if (model_.faces[index].color < 0) model_.faces[index].color = body_color;
                 body.faces.push_back(index);
             } catch (const geom::ReadError& err) {
-                warn("D" + std::to_string(f) + ": face skipped: " + err.reason() + " (line " +
-                     std::to_string(err.line()) + ")");
+                geom::skip_face(model_, "D" + std::to_string(f) + ": face skipped: " + err.reason() + " (line " +
+                                            std::to_string(err.line()) + ")");
             }
         }
     }

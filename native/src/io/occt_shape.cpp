@@ -409,9 +409,9 @@ std::vector<int> add_shape(geom::Model& model, const TopoDS_Shape& part, const S
             occurrence_face.push_back(static_cast<int>(model.faces.size()) - 1);
             continue;
         } catch (const Standard_Failure& e) {
-            model.warnings.push_back("face " + std::to_string(face_number) + " skipped: " + failure_text(e));
+            geom::skip_face(model, "face " + std::to_string(face_number) + " skipped: " + failure_text(e));
         } catch (const std::exception& e) {
-            model.warnings.push_back("face " + std::to_string(face_number) + " skipped: " + e.what());
+            geom::skip_face(model, "face " + std::to_string(face_number) + " skipped: " + e.what());
         }
         occurrence_face.push_back(-1);
     }

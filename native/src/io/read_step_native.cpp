@@ -219,11 +219,11 @@ int Topology::add_face(const StepInstance& step_face) {
         face_index_[step_face.id] = static_cast<int>(model_.faces.size()) - 1;
         return face_index_[step_face.id];
     } catch (const geom::ReadError& e) {
-        model_.warnings.push_back("face " + std::to_string(face_number_) + " skipped: " + e.reason() + " (line " +
-                                  std::to_string(e.line()) + ")");
+        geom::skip_face(model_, "face " + std::to_string(face_number_) + " skipped: " + e.reason() + " (line " +
+                              std::to_string(e.line()) + ")");
     } catch (const geom::InvalidInput& e) {
-        model_.warnings.push_back("face " + std::to_string(face_number_) + " skipped: #" +
-                                  std::to_string(step_face.id) + ": " + e.what());
+        geom::skip_face(model_, "face " + std::to_string(face_number_) + " skipped: #" + std::to_string(step_face.id) +
+                              ": " + e.what());
     }
     return -1;
 }
