@@ -21,6 +21,7 @@
 #include "io/occt_progress.h"
 #include "io/occt_shape.h"
 #include "io/occt_support.h"
+#include "io/read_support.h"
 
 namespace trimkit::io {
 namespace {
@@ -60,12 +61,7 @@ std::string one_line(const std::string& text) {
 // allocating what a damaged count asks (brep_counts.h). Returns what OCCT printed.
 std::string read_shape(const std::string& path, TopoDS_Shape& shape, const BRep_Builder& builder,
                        const Message_ProgressRange& progress) {
-    std::ifstream file(path, std::ios::binary | std::ios::ate);
-    if (!file) throw geom::ReadError(path, 0, "cannot open the file");
-    std::string content(static_cast<std::size_t>(file.tellg()), '\0');
-    file.seekg(0);
-    if (!file.read(content.data(), static_cast<std::streamsize>(content.size())))
-        throw geom::ReadError(path, 0, "cannot read the file");
+    std::string content = read_file_bytes(path);
     check_brep_counts(content, path);
     BrepInput in(std::move(content));
     std::ostringstream printed;

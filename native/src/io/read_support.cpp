@@ -14,7 +14,7 @@ std::string read_file_bytes(const std::string& path) {
     const std::streamoff size = in.tellg();
     if (size < 0) throw geom::ReadError(path, 0, "cannot determine the file size");
     if (static_cast<std::uint64_t>(size) > kMaxMeshFileBytes)
-        throw geom::ReadError(path, 0, std::to_string(size) + " bytes; mesh files are limited to " +
+        throw geom::ReadError(path, 0, std::to_string(size) + " bytes; files are limited to " +
                                            std::to_string(kMaxMeshFileBytes) + " bytes");
     std::string bytes(static_cast<std::size_t>(size), '\0');
     in.seekg(0);

@@ -1,6 +1,6 @@
-// Shared plumbing of the mesh readers (read_ply, read_obj, read_stl, read_glb):
-// whole-file reads, a bounds-checked little-endian cursor over bytes, and the
-// final validation that turns a bad mesh into a ReadError naming the file.
+// Shared plumbing of the mesh readers (read_ply, read_obj, read_stl, read_glb) and
+// the .brep reader: whole-file reads, a bounds-checked little-endian cursor over
+// bytes, and the final validation that turns a bad mesh into a ReadError naming the file.
 #pragma once
 
 #include <cstdint>
@@ -11,7 +11,7 @@
 namespace trimkit::io {
 
 // Files larger than this are refused before reading (4 GiB: the glb limit and
-// far above any mesh trimkit writes).
+// far above any mesh trimkit writes or .brep it reads).
 constexpr std::uint64_t kMaxMeshFileBytes = 4ull << 30;
 
 // The bytes of `path`; ReadError(path, 0, ...) if it cannot be opened or read.
