@@ -3,6 +3,7 @@
 // points): a point's cell is floor(p / size). The one spatial hash of the library.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -16,8 +17,14 @@ struct GridCell {
     bool operator==(const GridCell& o) const { return x == o.x && y == o.y && z == o.z; }
 
     static GridCell of(const Eigen::Vector3d& p, double size) {
-        return {static_cast<std::int64_t>(std::floor(p.x() / size)), static_cast<std::int64_t>(std::floor(p.y() / size)),
-                static_cast<std::int64_t>(std::floor(p.z() / size))};
+        return {index(p.x() / size), index(p.y() / size), index(p.z() / size)};
+    }
+    // floor(t), clamped to +-2^62 before the conversion (a double beyond int64's range
+    // would be undefined behaviour; such a coordinate is far beyond any model), NaN to 0.
+    static std::int64_t index(double t) {
+        constexpr double kLimit = 4.611686018427387904e18;  // 2^62
+        if (!(t == t)) return 0;
+        return static_cast<std::int64_t>(std::floor(std::clamp(t, -kLimit, kLimit)));
     }
 };
 
