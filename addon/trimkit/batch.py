@@ -47,7 +47,8 @@ def convert(inputs, output, tolerance, relative=False, angle=math.degrees(DEFAUL
 
     tolerance: in the files' units, or a fraction of each model's diagonal when
     `relative`; angle in degrees. Returns one summary dict per input (failed_faces:
-    how many; failed_face_reasons: [(model face id, reason)]); raises
+    how many; failed_face_reasons: [(model face id, reason)]; unread_faces: the reasons of
+    the faces the reader left out); raises
     RuntimeError/ValueError naming the file on the first failure, before the
     output is written. units: what the files' numbers are ("FILE": their declared
     unit, or MM, CM, M, INCH). lods: with N > 1 (.blend only), each object also gets
@@ -97,6 +98,7 @@ def convert(inputs, output, tolerance, relative=False, angle=math.degrees(DEFAUL
             raise type(err)(f"{path}: {err}") from err
         summary = dict(file=str(path), objects=count, faces=result.faces, triangles=result.triangles,
                        failed_faces=len(result.failed_faces), failed_face_reasons=list(result.failed_faces),
+                       unread_faces=list(model.unread_faces),
                        tolerance=result.tolerance, seconds=result.seconds)
         summaries.append(summary)
         if report:

@@ -48,6 +48,7 @@ def main():
         summary = summaries[0]
         return Outcome(status=OK, triangles=summary["triangles"],
                        failed_faces=[failed_face(f, reason) for f, reason in summary["failed_face_reasons"]],
+                       unread_faces=summary.get("unread_faces", []),
                        deviation=deviation, seconds=time.perf_counter() - start, output_bytes=size)
 
     with open(argv[1], "a", encoding="utf-8") as results:

@@ -62,7 +62,7 @@ def convert_model(job, sha256, settings):
         deviation = deviation_figures(_trimkit.measure_deviation(model, result.mesh), result.tolerance)
     return Outcome(status=OK, triangles=result.mesh.triangle_count,
                    failed_faces=[failed_face(f.face, f.reason) for f in result.failed_faces],
-                   deviation=deviation, output_bytes=size)
+                   unread_faces=list(model.unread_faces), deviation=deviation, output_bytes=size)
 
 
 def convert_tbp(job, settings):

@@ -20,7 +20,7 @@ import pathlib
 
 from .outcome import OK, SKIPPED, Outcome
 
-FIELDS = ("input", "sha256", "settings", "output", "status", "triangles", "failed_faces", "deviation",
+FIELDS = ("input", "sha256", "settings", "output", "status", "triangles", "failed_faces", "unread_faces", "deviation",
           "seconds", "worker", "error", "output_bytes", "parts")
 _HASH_BLOCK = 1 << 20
 
@@ -76,7 +76,8 @@ def up_to_date(previous, job, sha256, settings):
 def skipped(previous):
     """The outcome of a skipped input: its previous figures, no time, no worker."""
     return Outcome(status=SKIPPED, triangles=previous.get("triangles") or 0,
-                   failed_faces=previous.get("failed_faces") or [], deviation=previous.get("deviation"),
+                   failed_faces=previous.get("failed_faces") or [],
+                   unread_faces=previous.get("unread_faces") or [], deviation=previous.get("deviation"),
                    output_bytes=previous.get("output_bytes"), parts=previous.get("parts"))
 
 

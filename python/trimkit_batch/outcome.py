@@ -2,7 +2,9 @@
 
 status: "ok" (output written), "failed" (no output written; `error` says why) or
 "skipped" (a rerun found the output up to date). failed_faces: [{"face", "reason"}]
-with `face` numbered as `trimkit mesh` numbers them (instances placed). deviation:
+with `face` numbered as `trimkit mesh` numbers them (instances placed). unread_faces:
+the reasons of the faces the reader left out (Model.unread_faces), missing from the
+output as failed faces are. deviation:
 None, or (with --check) the two-sided distances in model units as `trimkit check`
 measures them. seconds: the conversion's own time on its worker, not the wait in the
 queue (with --split parts the parts' times and the assembly's, summed). Non-finite
@@ -23,6 +25,7 @@ class Outcome:
     status: str
     triangles: int = 0
     failed_faces: list = dataclasses.field(default_factory=list)
+    unread_faces: list = dataclasses.field(default_factory=list)
     deviation: dict = None
     seconds: float = 0.0
     error: str = None

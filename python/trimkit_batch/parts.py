@@ -44,6 +44,7 @@ class Plan:
     parts: list           # empty: the model has no instances (convert it whole)
     tolerance: float = 0.0  # absolute, model units
     faces: int = 0        # faces with instances placed
+    unread_faces: list = dataclasses.field(default_factory=list)  # Model.unread_faces
 
 
 def largest_scale(matrix):
@@ -91,7 +92,7 @@ def make_plan(model, tolerance):
     parts = [p for p in parts if p.faces]
     for part in parts:
         part.tolerance = tolerance / max(1.0, max(largest_scale(m) for m in part.placements))
-    return Plan(parts=parts, tolerance=tolerance, faces=next_face)
+    return Plan(parts=parts, tolerance=tolerance, faces=next_face, unread_faces=list(model.unread_faces))
 
 
 @dataclasses.dataclass
@@ -214,6 +215,7 @@ def write_assembly(job, settings, plan, meshes):
                     for part, m in zip(plan.parts, meshes) for k, reason in m.failed_faces
                     for first in part.first_faces]
     return Outcome(status=OK, triangles=mesh.triangle_count, failed_faces=sorted(failed_faces, key=lambda f: f["face"]),
+                   unread_faces=plan.unread_faces,
                    deviation=assembly_deviation(plan, meshes) if settings.check else None,
                    seconds=time.perf_counter() - start + sum(m.seconds for m in meshes),
                    output_bytes=size, parts=len(plan.parts))

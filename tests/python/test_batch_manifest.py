@@ -90,3 +90,21 @@ def test_settings_are_checked_and_stored_whole():
         Settings(tolerance=0.0)
     with pytest.raises(ValueError, match="split parts"):
         Settings(format="blend", split="parts")
+
+
+def test_a_face_the_reader_left_out_is_in_the_manifest_line(tmp_path):
+    """The face missing from the output is listed with its reason (Model.unread_faces),
+    as `trimkit mesh --json` lists it, and a skipped line keeps it."""
+    from iges_samples import write_skipped_face_file
+    from trimkit_batch import convert
+    (tmp_path / "lib").mkdir()
+    _, bad = write_skipped_face_file(tmp_path / "lib" / "skipped_face.igs")
+    [job] = inputs.discover([tmp_path / "lib"], tmp_path / "out", ".ply")
+    sha = manifest.sha256_of(job.input)
+    outcome = convert.convert_file(job, sha, Settings())
+    assert outcome.status == "ok", outcome.error
+    [reason] = outcome.unread_faces
+    assert f"D{bad}" in reason and "skipped" in reason
+    line = manifest.record(job, sha, Settings(), outcome)
+    assert line["unread_faces"] == [reason]
+    assert manifest.record(job, sha, Settings(), manifest.skipped(line))["unread_faces"] == [reason]
