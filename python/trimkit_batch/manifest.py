@@ -1,7 +1,7 @@
 """The manifest: one JSON object per line, one line per input, written as results arrive.
 
     {"input": ..., "sha256": ..., "settings": {...}, "output": ..., "status": "ok",
-     "triangles": ..., "failed_faces": [...], "deviation": null, "seconds": ...,
+     "triangles": ..., "failed_faces": [...], "unread_faces": [...], "deviation": null, "seconds": ...,
      "worker": "tcp://...", "error": null, "output_bytes": ..., "parts": null}
 
 A run reads the manifest it is about to replace: an input whose last line there says it
@@ -20,8 +20,8 @@ import pathlib
 
 from .outcome import OK, SKIPPED, Outcome
 
-FIELDS = ("input", "sha256", "settings", "output", "status", "triangles", "failed_faces", "unread_faces", "deviation",
-          "seconds", "worker", "error", "output_bytes", "parts")
+FIELDS = ("input", "sha256", "settings", "output", "status", "triangles", "failed_faces", "unread_faces",
+          "deviation", "seconds", "worker", "error", "output_bytes", "parts")
 _HASH_BLOCK = 1 << 20
 
 
