@@ -149,6 +149,7 @@ void bind_io(py::module_& m) {
     py::class_<io::ModelSummary>(m, "ModelSummary")
         .def_readonly("file", &io::ModelSummary::file)
         .def_readonly("units", &io::ModelSummary::units)
+        .def_readonly("unread_faces", &io::ModelSummary::unread_faces)
         .def_readonly("scale_to_metres", &io::ModelSummary::scale_to_metres)
         .def_readonly("faces", &io::ModelSummary::faces)
         .def_readonly("surfaces", &io::ModelSummary::surfaces)

@@ -17,6 +17,17 @@ def test_info_json_on_bracket(bracket):
     # plate: 4 natural-boundary lines + 1 hole circle; cylinder: 4 boundary lines
     assert info["coedges"] == 9
     assert isinstance(info["warnings"], list)
+    assert info["unread_faces"] == 0
+
+
+def test_info_counts_the_faces_the_reader_left_out(tmp_path):
+    from iges_samples import write_skipped_face_file
+    path, bad = write_skipped_face_file(tmp_path / "skipped_face.igs")
+    info = json.loads(run("info", str(path), "--json").stdout)
+    assert (info["faces"], info["unread_faces"]) == (1, 1)
+    assert any(f"D{bad}" in w and "skipped" in w for w in info["warnings"])
+    text = run("info", str(path)).stdout
+    assert "faces:           1 (and 1 the reader left out: see the warnings)" in text
 
 
 def test_info_text_on_bracket(bracket):

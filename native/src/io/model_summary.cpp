@@ -31,6 +31,7 @@ ModelSummary summarize(const geom::Model& as_read, const std::string& file) {
     for (const geom::Body& body : model.bodies) s.closed_bodies += body.closed ? 1 : 0;
     s.colors = static_cast<int>(model.colors.size());
     s.warnings = model.warnings;
+    s.unread_faces = static_cast<int>(model.unread_faces.size());
     for (size_t i = 0; i < model.faces.size(); ++i)
         for (const std::string& w : model.faces[i].warnings)
             s.warnings.push_back("face " + std::to_string(i) + ": " + w);
@@ -41,7 +42,7 @@ std::string to_json(const ModelSummary& s) {
     std::ostringstream out;
     out << "{\"file\": " << json_string(s.file) << ", \"units\": " << json_string(s.units)
         << ", \"scale_to_metres\": " << json_number(s.scale_to_metres)
-        << ", \"faces\": " << s.faces << ", \"surfaces\": {";
+        << ", \"faces\": " << s.faces << ", \"unread_faces\": " << s.unread_faces << ", \"surfaces\": {";
     const char* sep = "";
     for (const auto& [kind, count] : s.surfaces) {
         out << sep << json_string(kind) << ": " << count;
@@ -65,7 +66,10 @@ std::string to_text(const ModelSummary& s) {
     std::ostringstream out;
     out << "file:            " << s.file << "\n"
         << "units:           " << s.units << " (1 unit = " << s.scale_to_metres << " m)\n"
-        << "faces:           " << s.faces << "\n"
+        << "faces:           " << s.faces
+        << (s.unread_faces > 0 ? " (and " + std::to_string(s.unread_faces) + " the reader left out: see the warnings)"
+                               : std::string())
+        << "\n"
         << "surfaces:       ";
     for (const auto& [kind, count] : s.surfaces) out << " " << kind << " " << count;
     out << "\n"

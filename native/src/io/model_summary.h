@@ -15,6 +15,7 @@ struct ModelSummary {
     std::string units;
     double scale_to_metres = 1.0;
     int faces = 0;
+    int unread_faces = 0;  // faces of the file the reader left out (Model::unread_faces)
     std::map<std::string, int> surfaces;  // face count by surface_kind
     int loops = 0;
     int coedges = 0;
