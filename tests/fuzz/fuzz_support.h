@@ -8,7 +8,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <fstream>
 #include <string>
+
+#include <unistd.h>
 
 #include "geom/error.h"
 
@@ -19,6 +23,20 @@ inline const std::string kInputName = "fuzz-input";
 
 inline std::string input_text(const std::uint8_t* data, std::size_t size) {
     return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+// The input written to this process's scratch file `name` (for readers that only read
+// files, as OCCT's do): in $TMPDIR (tests/fuzz/run points it at /dev/shm), else /tmp.
+inline std::string scratch_file(const std::uint8_t* data, std::size_t size, const std::string& name) {
+    static const std::string prefix = [] {
+        const char* dir = std::getenv("TMPDIR");
+        return std::string(dir && *dir ? dir : "/tmp") + "/trimkit-fuzz-" + std::to_string(getpid()) + "-";
+    }();
+    const std::string path = prefix + name;
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    if (!out) std::abort();  // the harness's own failure, not the input's
+    return path;
 }
 
 // Runs `f`; returns normally when it ends or throws a bad-input error.

@@ -1,4 +1,5 @@
-// Helpers shared by the native tests: the CAD sample folder and finiteness checks.
+// Helpers shared by the native tests: the CAD sample folder, temporary paths and
+// finiteness checks.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -15,6 +16,12 @@ namespace trimkit::test {
 inline std::string cad_sample(const std::string& relative) {
     std::filesystem::path p = std::filesystem::path(TRIMKIT_CAD_DIR) / relative;
     return std::filesystem::exists(p) ? p.string() : std::string();
+}
+
+// A path in the system's temporary folder, "trimkit_" + name (names are per case: ctest
+// runs cases in parallel processes).
+inline std::string temp_path(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("trimkit_" + name)).string();
 }
 
 template <class Derived>

@@ -259,11 +259,12 @@ geom::Model IgesReader::read() {
         } catch (const geom::ReadError& err) {
             const std::string why = "D" + std::to_string(e.sequence) + ": entity " + std::to_string(e.type) +
                                     " skipped: " + err.reason() + " (line " + std::to_string(err.line()) + ")";
-            if (makes_faces(e.type))
+            const bool face_lost = makes_faces(e.type);
+            if (face_lost)
                 geom::skip_face(model_, why);
             else
                 warn(why);
-            if (first_failure.empty() && makes_faces(e.type)) {
+            if (first_failure.empty() && face_lost) {
                 first_failure = err.reason();
                 first_failure_line = err.line();
             }

@@ -3,12 +3,13 @@
 // points): a point's cell is floor(p / size). The one spatial hash of the library.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 
 #include <Eigen/Core>
+
+#include "geom/clamped_int.h"
 
 namespace trimkit::mesh {
 
@@ -19,12 +20,12 @@ struct GridCell {
     static GridCell of(const Eigen::Vector3d& p, double size) {
         return {index(p.x() / size), index(p.y() / size), index(p.z() / size)};
     }
-    // floor(t), clamped to +-2^62 before the conversion (a double beyond int64's range
+    // floor(t), clamped to +-2^62 (geom::clamped_int: a double beyond int64's range
     // would be undefined behaviour; such a coordinate is far beyond any model), NaN to 0.
     static std::int64_t index(double t) {
-        constexpr double kLimit = 4.611686018427387904e18;  // 2^62
+        constexpr std::int64_t kLimit = std::int64_t(1) << 62;
         if (!(t == t)) return 0;
-        return static_cast<std::int64_t>(std::floor(std::clamp(t, -kLimit, kLimit)));
+        return geom::clamped_int(std::floor(t), -kLimit, kLimit);
     }
 };
 

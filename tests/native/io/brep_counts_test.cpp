@@ -24,29 +24,33 @@ std::string brep_text(const std::string& poles, const std::string& nodes, const 
            "TShapes 0\n";
 }
 
+// The ReadError check_brep_counts throws for `text`; a test failure (and an error with
+// no line or reason) when it throws none.
+geom::ReadError counts_error(const std::string& text, const std::string& name) {
+    try {
+        check_brep_counts(text, name);
+    } catch (const geom::ReadError& e) {
+        return e;
+    }
+    ADD_FAILURE() << name << ": no error";
+    return geom::ReadError(name, -1, "");
+}
+
 TEST(BrepCounts, CountsTheFileHoldsPass) {
     EXPECT_NO_THROW(check_brep_counts(brep_text("2", "3", "1"), "ok.brep"));
 }
 
 TEST(BrepCounts, TooManyPolesIsAnErrorOnTheirLine) {
-    try {
-        check_brep_counts(brep_text("2000000000", "3", "1"), "poles.brep");
-        FAIL() << "no error";
-    } catch (const geom::ReadError& e) {
-        EXPECT_EQ(e.line(), 7);  // the curve's line
-        EXPECT_NE(e.reason().find("2000000000"), std::string::npos) << e.what();
-        EXPECT_NE(e.reason().find("Curves"), std::string::npos) << e.what();
-    }
+    const geom::ReadError e = counts_error(brep_text("2000000000", "3", "1"), "poles.brep");
+    EXPECT_EQ(e.line(), 7);  // the curve's line
+    EXPECT_NE(e.reason().find("2000000000"), std::string::npos) << e.what();
+    EXPECT_NE(e.reason().find("Curves"), std::string::npos) << e.what();
 }
 
 TEST(BrepCounts, TooManyTrianglesIsAnErrorOnTheirLine) {
-    try {
-        check_brep_counts(brep_text("2", "3", "2000000000"), "triangles.brep");
-        FAIL() << "no error";
-    } catch (const geom::ReadError& e) {
-        EXPECT_EQ(e.line(), 15);  // the triangulation's header
-        EXPECT_NE(e.reason().find("Triangulations"), std::string::npos) << e.what();
-    }
+    const geom::ReadError e = counts_error(brep_text("2", "3", "2000000000"), "triangles.brep");
+    EXPECT_EQ(e.line(), 15);  // the triangulation's header
+    EXPECT_NE(e.reason().find("Triangulations"), std::string::npos) << e.what();
 }
 
 TEST(BrepCounts, ANegativeCountIsAnError) {

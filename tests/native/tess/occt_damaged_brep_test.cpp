@@ -17,15 +17,14 @@
 #include "geom/error.h"
 #include "io/occt_models.h"
 #include "io/read_model.h"
+#include "test_support.h"
 
 namespace trimkit {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string temp_path(const std::string& name) {
-    return (std::filesystem::temp_directory_path() / ("trimkit_damaged_" + name)).string();
-}
+std::string temp_path(const std::string& name) { return test::temp_path("damaged_" + name); }
 
 std::string text_of(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -59,6 +58,22 @@ int line_at(const std::string& text, std::size_t offset) {
     return 1 + static_cast<int>(std::count(text.begin(), text.begin() + offset, '\n'));
 }
 
+// The ReadError of reading `text` as the file `name`; a test failure (and an error
+// with no line or reason) when it reads.
+geom::ReadError read_error(const std::string& text, const std::string& name) {
+    const std::string path = temp_path(name);
+    write_text(path, text);
+    geom::ReadError error(path, -1, "");
+    try {
+        io::read_model(path);
+        ADD_FAILURE() << name << ": a damaged file was read";
+    } catch (const geom::ReadError& e) {
+        error = e;
+    }
+    std::filesystem::remove(path);
+    return error;
+}
+
 TEST(OcctDamagedBrep, TheWholeFileReads) {
     const BrepText b = cylinder_face_text("whole.brep");
     ASSERT_GT(b.first_record, 0u);
@@ -72,15 +87,8 @@ TEST(OcctDamagedBrep, FileCutInsideAnEdgesRecordIsCutOff) {
     const BrepText b = cylinder_face_text("cut_record.brep");
     ASSERT_GT(b.first_record, 0u);
     // "1  <curve> <location> <first> <last>": cut after the record's kind.
-    const std::string path = temp_path("cut_record_copy.brep");
-    write_text(path, b.text.substr(0, b.first_record + 3));
-    try {
-        io::read_model(path);
-        ADD_FAILURE() << "a cut-off file was read";
-    } catch (const geom::ReadError& e) {
-        EXPECT_NE(e.reason().find("cut off"), std::string::npos) << e.what();
-    }
-    std::filesystem::remove(path);
+    const geom::ReadError e = read_error(b.text.substr(0, b.first_record + 3), "cut_record_copy.brep");
+    EXPECT_NE(e.reason().find("cut off"), std::string::npos) << e.what();
 }
 
 TEST(OcctDamagedBrep, WordInAnEdgesRecordIsAnErrorOnItsLine) {
@@ -90,15 +98,8 @@ TEST(OcctDamagedBrep, WordInAnEdgesRecordIsAnErrorOnItsLine) {
     const std::size_t index = text.find_first_not_of(' ', b.first_record + 1);  // the curve's index
     ASSERT_NE(index, std::string::npos);
     text[index] = 'x';
-    const std::string path = temp_path("word_copy.brep");
-    write_text(path, text);
-    try {
-        io::read_model(path);
-        ADD_FAILURE() << "a damaged file was read";
-    } catch (const geom::ReadError& e) {
-        EXPECT_EQ(e.line(), line_at(text, index)) << e.what();
-    }
-    std::filesystem::remove(path);
+    const geom::ReadError e = read_error(text, "word_copy.brep");
+    EXPECT_EQ(e.line(), line_at(text, index)) << e.what();
 }
 
 // A real file (CrankArm.brep) whose first triangulation claims 2e9 triangles: OCCT
@@ -112,15 +113,8 @@ TEST(OcctDamagedBrep, TriangleCountBeyondTheFileIsRefusedOnItsLine) {
     const std::size_t header = text.find('\n', section + 1) + 1;   // "nodes triangles uv deflection"
     const std::size_t triangles = text.find(' ', header) + 1;
     text.replace(triangles, text.find(' ', triangles) - triangles, "2000000000");
-    const std::string path = temp_path("triangles.brep");
-    write_text(path, text);
-    try {
-        io::read_model(path);
-        ADD_FAILURE() << "the damaged count was read";
-    } catch (const geom::ReadError& e) {
-        EXPECT_EQ(e.line(), line_at(text, header)) << e.what();
-    }
-    std::filesystem::remove(path);
+    const geom::ReadError e = read_error(text, "triangles.brep");
+    EXPECT_EQ(e.line(), line_at(text, header)) << e.what();
 }
 
 // A face record naming surface 0 (OCCT gives it a null surface): ShapeFix_Face faulted
@@ -157,17 +151,10 @@ TEST(OcctDamagedBrep, WhatOcctPrintsIsInTheError) {
     ASSERT_NE(surfaces, std::string::npos);
     const std::size_t first = b.text.find('\n', surfaces + 1) + 1;  // the first surface's type code
     b.text.replace(first, 1, "99");
-    const std::string path = temp_path("printed_copy.brep");
-    write_text(path, b.text);
     testing::internal::CaptureStdout();
-    try {
-        io::read_model(path);
-        ADD_FAILURE() << "a damaged file was read";
-    } catch (const geom::ReadError& e) {
-        EXPECT_NE(e.reason().find("Not a TShape table"), std::string::npos) << e.what();
-    }
+    const geom::ReadError e = read_error(b.text, "printed_copy.brep");
     EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
-    std::filesystem::remove(path);
+    EXPECT_NE(e.reason().find("Not a TShape table"), std::string::npos) << e.what();
 }
 
 TEST(OcctDamagedBrep, EveryCutOfTheFileIsAReadError) {

@@ -32,10 +32,7 @@ namespace trimkit {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string temp_path(const std::string& name) {
-    return (std::filesystem::temp_directory_path() / ("trimkit_" + name)).string();
-}
+using test::temp_path;
 
 // Area of the triangles of `mesh` with face id `face` (-1: all).
 double mesh_area(const mesh::Mesh& mesh, int face = -1) {
